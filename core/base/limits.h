@@ -1,0 +1,22 @@
+// Resource limits, in one place. Every limit has a CLI flag that raises it; a hit throws LimitError
+// naming the limit and the flag. Defaults fit a browser tab (the wasm module's memory cap).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace tessera {
+
+struct Limits {
+  std::size_t max_vertices = 4'000'000;      // --max-vertices
+  std::size_t max_faces = 8'000'000;         // --max-faces
+  std::size_t max_file_bytes = 1'500'000'000;  // --max-file-bytes
+  std::size_t max_coset_table = 4'000'000;   // --max-cosets (rows of a coset table)
+  double max_coset_seconds = 20.0;           // --max-seconds (coset enumeration)
+};
+
+// Throws LimitError("<what> has <value>, above the limit <limit> (<flag>) ...") if value > limit.
+void check_limit(std::size_t value, std::size_t limit, const std::string& what,
+                 const std::string& flag);
+
+}  // namespace tessera
