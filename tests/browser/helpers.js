@@ -1,0 +1,98 @@
+// What the browser tests share: opening the page, reading it, and meshes made in code.
+
+export const BACKGROUND_RGB = [0x23, 0x27, 0x2e]; // the viewer's background (web/src/viewer/viewer.js)
+
+/** Opens the page (with an optional hash) and waits until a mesh is shown and no job runs. */
+export async function openPage(page, url, hash = '') {
+  await page.goto(`${url}${hash}`);
+  await page.locator('[data-role=mesh-name]').filter({ hasText: /\S/ }).waitFor();
+  await idle(page);
+}
+
+export async function idle(page) {
+  await page.locator('[data-role=progress]').waitFor({ state: 'hidden' });
+}
+
+/** The text of one figure of the info panel, e.g. figure(page, 'genus'). */
+export function figure(page, key) {
+  return page.locator(`[data-figure=${key}]`).textContent();
+}
+
+export const meshName = (page) => page.locator('[data-role=mesh-name]').textContent();
+export const message = (page) => page.locator('[data-role=message]');
+
+/** Gives files to the page's file input, as a user picking them would. */
+export async function pickFiles(page, files) {
+  await page.locator('#file-input').setInputFiles(
+    files.map(({ name, text, bytes }) => ({
+      name,
+      mimeType: 'application/octet-stream',
+      buffer: bytes ?? Buffer.from(text),
+    })),
+  );
+}
+
+/** Drops files on the page, as a user dragging them from a file manager would. */
+export async function dropFiles(page, files) {
+  await page.evaluate((entries) => {
+    const transfer = new DataTransfer();
+    for (const { name, text } of entries) transfer.items.add(new File([text], name));
+    for (const type of ['dragenter', 'dragover', 'drop']) {
+      document.body.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+    }
+  }, files);
+}
+
+/** Chooses a sample in the samples menu and waits for it to be shown. */
+export async function chooseSample(page, name) {
+  await page.locator('[data-role=samples]').selectOption(name);
+  await page.locator('[data-role=mesh-name]').filter({ hasText: name }).waitFor();
+  await idle(page);
+}
+
+/**
+ * The share of the canvas's pixels that differ from the background, from a screenshot decoded in
+ * the page itself (no image library needed here).
+ */
+export async function foregroundShare(page) {
+  const png = await page.locator('#viewport canvas').screenshot();
+  return page.evaluate(
+    async ({ base64, background }) => {
+      const blob = await (await fetch(`data:image/png;base64,${base64}`)).blob();
+      const image = await createImageBitmap(blob);
+      const canvas = new OffscreenCanvas(image.width, image.height);
+      const context = canvas.getContext('2d');
+      context.drawImage(image, 0, 0);
+      const { data } = context.getImageData(0, 0, image.width, image.height);
+      let differing = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        const distance = Math.abs(data[i] - background[0]) + Math.abs(data[i + 1] - background[1]) + Math.abs(data[i + 2] - background[2]);
+        if (distance > 30) differing++;
+      }
+      return differing / (data.length / 4);
+    },
+    { base64: png.toString('base64'), background: BACKGROUND_RGB },
+  );
+}
+
+/** A unit cube of 6 quads as OBJ text: V 8, E 12, F 6, genus 0. */
+export function cubeObj() {
+  const corners = [];
+  for (const x of [0, 1]) for (const y of [0, 1]) for (const z of [0, 1]) corners.push(`v ${x} ${y} ${z}`);
+  const faces = ['1 2 4 3', '5 7 8 6', '1 5 6 2', '3 4 8 7', '1 3 7 5', '2 6 8 4'].map((f) => `f ${f}`);
+  return ['# cube made by the browser tests', ...corners, ...faces, ''].join('\n');
+}
+
+/** An n x n grid of quads, each split into two triangles, as OBJ text: (n+1)^2 vertices, 2n^2 faces. */
+export function gridObj(n) {
+  const lines = [];
+  for (let i = 0; i <= n; i++) for (let j = 0; j <= n; j++) lines.push(`v ${i / n} ${j / n} ${0.1 * Math.sin(i / 7) * Math.cos(j / 5)}`);
+  const at = (i, j) => i * (n + 1) + j + 1;
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j < n; j++) {
+      lines.push(`f ${at(i, j)} ${at(i + 1, j)} ${at(i + 1, j + 1)}`, `f ${at(i, j)} ${at(i + 1, j + 1)} ${at(i, j + 1)}`);
+    }
+  }
+  lines.push('');
+  return lines.join('\n');
+}

@@ -1,0 +1,68 @@
+import { describe, expect, it } from 'vitest';
+import { DEFAULT_STATE, formatHash, parseHash } from '../../web/src/ui/hash.js';
+
+describe('parseHash', () => {
+  it('gives the defaults for an empty or missing hash', () => {
+    for (const hash of ['', '#', undefined, null]) {
+      expect(parseHash(hash)).toEqual({ state: DEFAULT_STATE, problems: [] });
+    }
+  });
+
+  it('reads every shareable key', () => {
+    const { state, problems } = parseHash('#mode=quad&sample=genus2&shading=smooth&wireframe=1');
+    expect(problems).toEqual([]);
+    expect(state).toEqual({ mode: 'quad', sample: 'genus2', shading: 'smooth', wireframe: true });
+    expect(parseHash('wireframe=0').state.wireframe).toBe(false);
+  });
+
+  it('drops malformed values with a note and keeps the defaults', () => {
+    const { state, problems } = parseHash('#mode=regmap&shading=shiny&wireframe=yes&sample=');
+    expect(state).toEqual(DEFAULT_STATE);
+    expect(problems).toHaveLength(4);
+    expect(problems.join(' ')).toMatch(/"mode".*"shading".*"wireframe".*"sample"/);
+  });
+
+  it('refuses sample names that could be markup, paths or anything long', () => {
+    for (const sample of ['<img src=x onerror=alert(1)>', '../../etc/passwd', 'a b', 'x'.repeat(65), '.hidden']) {
+      const { state, problems } = parseHash(`#sample=${encodeURIComponent(sample)}`);
+      expect(state.sample, sample).toBeNull();
+      expect(problems, sample).toHaveLength(1);
+    }
+    expect(parseHash("#sample=R2.4'").state.sample).toBe("R2.4'");
+  });
+
+  it('ignores unknown keys and keeps the first of repeated keys', () => {
+    const { state, problems } = parseHash('#zoom=3&sample=torus&sample=sphere&__proto__=x&constructor=y');
+    expect(state.sample).toBe('torus');
+    expect(problems).toEqual([
+      'Unknown link setting "zoom" ignored.',
+      'Link setting "sample" given twice: the first value is used.',
+      'Unknown link setting "__proto__" ignored.',
+      'Unknown link setting "constructor" ignored.',
+    ]);
+    expect(Object.getPrototypeOf(state)).toBe(Object.prototype);
+  });
+
+  it('ignores a hash longer than its limit as a whole', () => {
+    const { state, problems } = parseHash(`#sample=torus&pad=${'x'.repeat(3000)}`);
+    expect(state).toEqual(DEFAULT_STATE);
+    expect(problems[0]).toMatch(/longer than 2000 characters/);
+  });
+
+  it('survives broken percent-encoding', () => {
+    expect(() => parseHash('#sample=%E0%A4%A&shading=%')).not.toThrow();
+    expect(parseHash('#sample=%E0%A4%A').state.sample).toBeNull();
+  });
+});
+
+describe('formatHash', () => {
+  it('writes the mode and only what differs from the defaults', () => {
+    expect(formatHash(DEFAULT_STATE)).toBe('#mode=quad');
+    expect(formatHash({ ...DEFAULT_STATE, sample: 'torus', wireframe: true })).toBe('#mode=quad&sample=torus&wireframe=1');
+  });
+
+  it('round-trips through parseHash', () => {
+    const state = { mode: 'quad', sample: "R3.1'", shading: 'smooth', wireframe: true };
+    expect(parseHash(formatHash(state))).toEqual({ state, problems: [] });
+  });
+});

@@ -1,0 +1,66 @@
+// The page state that a link can share, kept in the URL hash as `#key=value&key=value`.
+// The hash comes from anywhere (a pasted link): it is parsed defensively, and every key that is
+// unknown, repeated or malformed is dropped with a note instead of reaching the page.
+
+export const MODES = Object.freeze(['quad']);
+const MAX_HASH_LENGTH = 2000;
+
+const oneOf = (values) => (text) => (values.includes(text) ? text : undefined);
+const name = (text) => (/^[A-Za-z0-9][A-Za-z0-9_.'-]{0,63}$/.test(text) ? text : undefined);
+const flag = (text) => ({ 1: true, 0: false })[text];
+
+/** Each shareable key, with its parser (text -> value, or undefined when malformed). */
+const FIELDS = Object.freeze({
+  mode: oneOf(MODES),
+  sample: name,
+  shading: oneOf(['flat', 'smooth']),
+  wireframe: flag,
+});
+
+export const DEFAULT_STATE = Object.freeze({
+  mode: 'quad',
+  sample: null,
+  shading: 'flat',
+  wireframe: false,
+});
+
+/**
+ * Parses a location.hash string.
+ * Returns { state, problems }: state holds every key of DEFAULT_STATE (defaults where the hash has
+ * no valid value); problems lists, in plain words, what was ignored.
+ */
+export function parseHash(hash) {
+  const state = { ...DEFAULT_STATE };
+  const problems = [];
+  const text = String(hash ?? '').replace(/^#/, '');
+  if (text.length > MAX_HASH_LENGTH) {
+    return { state, problems: [`The link's state is longer than ${MAX_HASH_LENGTH} characters and was ignored.`] };
+  }
+  const seen = new Set();
+  for (const [key, raw] of new URLSearchParams(text)) {
+    const parse = Object.hasOwn(FIELDS, key) ? FIELDS[key] : null;
+    if (!parse) {
+      problems.push(`Unknown link setting "${key}" ignored.`);
+    } else if (seen.has(key)) {
+      problems.push(`Link setting "${key}" given twice: the first value is used.`);
+    } else {
+      seen.add(key);
+      const value = parse(raw);
+      if (value === undefined) problems.push(`Link setting "${key}" has an invalid value and was ignored.`);
+      else state[key] = value;
+    }
+  }
+  return { state, problems };
+}
+
+/** The hash for a state: mode always, other keys only where they differ from the defaults. */
+export function formatHash(state) {
+  const params = new URLSearchParams();
+  for (const key of Object.keys(FIELDS)) {
+    const value = state[key];
+    if (value === undefined || value === null) continue;
+    if (key !== 'mode' && value === DEFAULT_STATE[key]) continue;
+    params.set(key, typeof value === 'boolean' ? (value ? '1' : '0') : value);
+  }
+  return `#${params}`;
+}

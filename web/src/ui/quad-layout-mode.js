@@ -1,0 +1,106 @@
+import { COMMANDS } from '../worker/protocol.js';
+import { pickMeshFile } from '../worker/file-types.js';
+import { showInfo } from './info-panel.js';
+import { downloadBytes, downloadName } from './download.js';
+
+const DEFAULT_SAMPLE = 'genus2';
+
+/**
+ * The Quad layout mode: a mesh from a sample or a file, its figures, and its export.
+ * panel: the mode's section of the page; viewer, client (WorkerClient), jobs (Jobs), status (Status);
+ * onStateChange(partial state) when what a link should share changes.
+ */
+export class QuadLayoutMode {
+  constructor({ panel, viewer, client, jobs, status, onStateChange }) {
+    Object.assign(this, { panel, viewer, client, jobs, status, onStateChange });
+    this.part = (role) => panel.querySelector(`[data-role=${role}]`);
+    this.mesh = null; // the mesh on screen
+    this.sample = null; // its sample name, null for a file
+    this.sampleNames = [];
+
+    this.part('samples').addEventListener('change', (event) => this.showSample(event.target.value));
+    this.part('export-glb').addEventListener('click', () => this.exportGlb());
+  }
+
+  /** Lists the samples and shows state.sample (or the default sample). */
+  async start(state) {
+    const reply = await this.request('Starting the geometry core', COMMANDS.sampleNames, null);
+    if (!reply) return;
+    this.sampleNames = reply.names;
+    this.fillSampleMenu();
+    await this.applyState(state);
+  }
+
+  /** Shows the sample a link names; without a valid one, keeps the mesh on screen (or the default). */
+  async applyState({ sample }) {
+    if (this.sampleNames.length === 0) return;
+    const known = this.sampleNames.includes(sample);
+    if (known && sample !== this.sample) await this.showSample(sample);
+    if (!known && !this.mesh) await this.showSample(this.defaultSample());
+    if (sample && !known) {
+      this.status.showNotice(`There is no sample named "${sample}".`, `Samples: ${this.sampleNames.join(', ')}.`);
+    }
+  }
+
+  defaultSample() {
+    return this.sampleNames.includes(DEFAULT_SAMPLE) ? DEFAULT_SAMPLE : this.sampleNames[0];
+  }
+
+  async showSample(name) {
+    const mesh = await this.request(`Building the sample "${name}"`, COMMANDS.sampleMesh, { name });
+    if (mesh) this.show(mesh, name);
+    else this.syncSampleMenu();
+  }
+
+  /** Files dropped or picked by the user: exactly one mesh file is taken. */
+  async openFiles(files) {
+    let file;
+    try {
+      file = pickMeshFile(files);
+    } catch (error) {
+      this.status.showError(error);
+      return;
+    }
+    const mesh = await this.request(`Opening ${file.name}`, COMMANDS.loadMesh, { file });
+    if (mesh) this.show(mesh, null);
+  }
+
+  async exportGlb() {
+    if (!this.mesh) return;
+    const { name, info, positions, triangles, triangleFace } = this.mesh;
+    const payload = {
+      positions,
+      triangles,
+      faceIds: triangleFace,
+      extras: { generator: 'Tessera', source: name, info },
+    };
+    const reply = await this.request('Writing the GLB file', COMMANDS.exportGlb, payload);
+    if (reply) downloadBytes(reply.bytes, downloadName(name, 'glb'), 'model/gltf-binary');
+  }
+
+  request(label, command, payload) {
+    return this.jobs.run(label, (onProgress) => this.client.request(command, payload, { onProgress }));
+  }
+
+  show(mesh, sample) {
+    this.mesh = mesh;
+    this.sample = sample;
+    this.viewer.showMesh(mesh);
+    showInfo(this.part('info'), mesh);
+    this.part('export-glb').disabled = false;
+    this.syncSampleMenu();
+    this.onStateChange({ sample });
+  }
+
+  fillSampleMenu() {
+    const placeholder = new Option('Samples…', '');
+    placeholder.disabled = true;
+    const options = this.sampleNames.map((name) => new Option(name, name));
+    this.part('samples').replaceChildren(placeholder, ...options);
+    this.part('samples').disabled = false;
+  }
+
+  syncSampleMenu() {
+    this.part('samples').value = this.sample ?? '';
+  }
+}

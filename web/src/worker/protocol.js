@@ -1,0 +1,69 @@
+/**
+ * The one message protocol between the page and the compute worker.
+ *
+ * Page -> worker, one message per request:
+ *   { id, command, payload }
+ *     id       a number, unique per client
+ *     command  a name from COMMANDS
+ *     payload  the command's argument (plain data, typed arrays, File objects)
+ *
+ * Worker -> page, any number of progress events, then exactly one result or error:
+ *   { id, type: 'progress', stage, fraction }   stage: a short text; fraction: 0..1 over the whole job
+ *   { id, type: 'result', payload }             typed arrays in payload are transferred, not copied
+ *   { id, type: 'error', kind, message }        kind: the core's error kind ('parse', 'topology',
+ *                                               'geometry', 'limit', 'internal') or one of ours below
+ *
+ * Cancellation is not a message: the page terminates the worker and starts a fresh one (a stage
+ * inside the wasm module cannot be interrupted any other way), and every pending request is
+ * rejected with kind 'cancelled'. A worker that dies (script error, wasm trap) is replaced the same
+ * way and its pending requests are rejected with kind 'crash'.
+ */
+
+export const COMMANDS = Object.freeze({
+  sampleNames: 'sampleNames', // payload: none -> { names: string[] }
+  sampleMesh: 'sampleMesh', // payload: { name } -> mesh (see worker.js)
+  loadMesh: 'loadMesh', // payload: { file: File } -> mesh
+  exportGlb: 'exportGlb', // payload: { positions, triangles, faceIds?, colors?, extras? } -> { bytes }
+});
+
+/** Error kinds that the page adds to the core's. */
+export const PAGE_ERROR_KINDS = Object.freeze({
+  cancelled: 'cancelled', // the user cancelled the job
+  crash: 'crash', // the worker or the wasm module died; a fresh one took its place
+  unsupported: 'unsupported', // the page cannot take this input (file type, several files)
+});
+
+export const progressEvent = (id, stage, fraction) => ({ id, type: 'progress', stage, fraction });
+export const resultEvent = (id, payload) => ({ id, type: 'result', payload });
+export const errorEvent = (id, kind, message) => ({ id, type: 'error', kind, message });
+
+/** An Error with the protocol's `kind`, as the client rejects a request with. */
+export function jobError(kind, message) {
+  const error = new Error(message);
+  error.kind = kind;
+  return error;
+}
+
+/**
+ * Makes every typed array in `payload` own its buffer (copying views into a larger buffer such as
+ * the wasm heap, which must never be transferred) and returns the buffers to transfer.
+ */
+export function ownedBuffers(payload) {
+  const buffers = new Set();
+  const visit = (value) => {
+    if (ArrayBuffer.isView(value)) return own(value, buffers);
+    if (value === null || typeof value !== 'object') return value;
+    if (Array.isArray(value)) return value.map(visit);
+    if (Object.getPrototypeOf(value) !== Object.prototype) return value;
+    return Object.fromEntries(Object.entries(value).map(([key, v]) => [key, visit(v)]));
+  };
+  const owned = visit(payload);
+  return { payload: owned, transfer: [...buffers] };
+}
+
+function own(view, buffers) {
+  const whole = view.byteOffset === 0 && view.byteLength === view.buffer.byteLength;
+  const owned = whole && view.buffer instanceof ArrayBuffer ? view : view.slice();
+  buffers.add(owned.buffer);
+  return owned;
+}

@@ -1,0 +1,102 @@
+// The compute worker: runs the wasm core off the page's thread and answers the requests of
+// protocol.js. No algorithm lives here: it calls the core and prepares data for the viewer.
+import { COMMANDS, PAGE_ERROR_KINDS, errorEvent, ownedBuffers, progressEvent, resultEvent } from './protocol.js';
+import { externalBufferUris, externalBuffersError, meshFormat } from './file-types.js';
+import { polygonEdges, vertexNormals } from './display.js';
+
+// The wasm build is a static file (web/public/wasm), not a source module: an absolute URL keeps
+// Vite's dev server from treating the import as one of its own.
+const CORE_URL = new URL(`${import.meta.env.BASE_URL}wasm/tessera.mjs`, self.location.href).href;
+
+let core = null; // Promise of the wasm module, created on first use, dropped after a trap
+
+function loadCore() {
+  core ??= import(/* @vite-ignore */ CORE_URL)
+    .then(({ default: createTessera }) => createTessera())
+    .catch((cause) => {
+      core = null;
+      const error = new Error(
+        `The geometry core (${CORE_URL}) could not be started: ${cause?.message ?? cause}. ` +
+          'Build it with `npm start` (or scripts/build.sh) and reload the page.',
+      );
+      error.kind = 'internal';
+      throw error;
+    });
+  return core;
+}
+
+const handlers = {
+  async [COMMANDS.sampleNames]() {
+    const module = await loadCore();
+    return { names: [...module.sampleNames()] };
+  },
+
+  async [COMMANDS.sampleMesh]({ name }, progress) {
+    progress('Starting the geometry core', 0);
+    const module = await loadCore();
+    progress(`Building the sample "${name}"`, 0.2);
+    return meshForViewer(module.sampleMesh(name), progress);
+  },
+
+  async [COMMANDS.loadMesh]({ file }, progress) {
+    progress('Starting the geometry core', 0);
+    const module = await loadCore();
+    progress(`Reading ${file.name}`, 0.1);
+    const bytes = new Uint8Array(await file.arrayBuffer());
+    if (meshFormat(file.name) === 'gltf') {
+      const uris = externalBufferUris(new TextDecoder().decode(bytes));
+      if (uris.length > 0) throw externalBuffersError(file.name, uris);
+    }
+    progress('Building the mesh', 0.3);
+    return meshForViewer(module.loadMesh(bytes, file.name), progress);
+  },
+
+  async [COMMANDS.exportGlb](payload, progress) {
+    progress('Writing the GLB file', 0);
+    const module = await loadCore();
+    return { bytes: module.exportGlb(payload) };
+  },
+};
+
+// The core's MeshResult plus what the viewer draws: vertex normals and the polygons' edges.
+function meshForViewer(mesh, progress) {
+  progress('Preparing the view', 0.8);
+  const { name, info, positions, triangles, triangleFace } = mesh;
+  return {
+    name,
+    info,
+    positions,
+    triangles,
+    triangleFace,
+    normals: vertexNormals(positions, triangles),
+    edges: polygonEdges(triangles, triangleFace),
+  };
+}
+
+// A trap or an error without a kind may leave the wasm module in a broken state: drop it, so that
+// the next request starts a fresh one.
+function describeFailure(error) {
+  if (typeof error?.kind === 'string') return { kind: error.kind, message: error.message };
+  core = null;
+  const detail = error?.message ?? String(error);
+  if (error instanceof WebAssembly.RuntimeError) {
+    return {
+      kind: PAGE_ERROR_KINDS.crash,
+      message: `The geometry core stopped (${detail}). It has been restarted: try again.`,
+    };
+  }
+  return { kind: 'internal', message: `Internal error: ${detail}` };
+}
+
+self.onmessage = async ({ data: { id, command, payload } }) => {
+  const progress = (stage, fraction) => self.postMessage(progressEvent(id, stage, fraction));
+  const handler = handlers[command];
+  try {
+    if (!handler) throw new Error(`unknown command "${command}"`);
+    const owned = ownedBuffers(await handler(payload ?? {}, progress));
+    self.postMessage(resultEvent(id, owned.payload), owned.transfer);
+  } catch (error) {
+    const { kind, message } = describeFailure(error);
+    self.postMessage(errorEvent(id, kind, message));
+  }
+};
