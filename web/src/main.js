@@ -34,7 +34,13 @@ selectTab(state.mode);
 
 let viewer;
 try {
-  viewer = new Viewer(byId('viewport'));
+  viewer = new Viewer(byId('viewport'), {
+    onContextLost: () =>
+      status.showError({
+        kind: 'internal',
+        message: 'The 3D view lost its graphics context (the GPU was reset or is out of memory). It comes back by itself when the browser allows; reload the page if it does not.',
+      }),
+  });
 } catch (error) {
   status.showError({ kind: 'internal', message: `The 3D view could not start (${error.message}). Tessera needs a browser with WebGL 2.` });
 }

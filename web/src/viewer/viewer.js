@@ -22,13 +22,16 @@ const EDGES = '#1b1d22';
 
 /**
  * The 3D view: one surface mesh with optional polygon edges, orbit controls, rendered on demand.
- * container: an element the canvas fills. Throws if WebGL cannot start.
+ * container: an element the canvas fills; onContextLost() when the browser takes the GPU context
+ * away (three.js rebuilds what it needs once the context is restored). Throws if WebGL cannot start.
  */
 export class Viewer {
-  constructor(container) {
+  constructor(container, { onContextLost }) {
     this.renderer = new WebGLRenderer({ antialias: true });
     this.renderer.setPixelRatio(window.devicePixelRatio);
     container.append(this.renderer.domElement);
+    this.renderer.domElement.addEventListener('webglcontextlost', onContextLost);
+    this.renderer.domElement.addEventListener('webglcontextrestored', () => this.requestRender());
 
     this.scene = new Scene();
     this.scene.background = new Color(BACKGROUND);
