@@ -104,6 +104,18 @@ describe('WorkerClient', () => {
     await expect(next).resolves.toBe('alive');
   });
 
+  it('a request that cannot be sent rejects at once and leaves the client idle', async () => {
+    const { client, workers } = clientWithFakes();
+    workers[0].postMessage = () => {
+      throw new Error('could not be cloned');
+    };
+    await expect(client.request('loadMesh', { f: () => {} })).rejects.toMatchObject({
+      kind: 'internal',
+      message: expect.stringContaining('could not be cloned'),
+    });
+    expect(client.busy).toBe(false);
+  });
+
   it('an unreadable message from the worker counts as a crash', async () => {
     const { client, workers } = clientWithFakes();
     const pending = client.request('a', null);

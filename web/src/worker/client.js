@@ -22,8 +22,13 @@ export class WorkerClient {
   request(command, payload, { onProgress, transfer = [] } = {}) {
     const id = this.nextId++;
     return new Promise((resolve, reject) => {
+      try {
+        this.worker.postMessage({ id, command, payload }, transfer);
+      } catch (error) {
+        reject(jobError('internal', `The request "${command}" could not be sent to the worker: ${error.message}`));
+        return;
+      }
       this.pending.set(id, { resolve, reject, onProgress });
-      this.worker.postMessage({ id, command, payload }, transfer);
     });
   }
 

@@ -90,10 +90,9 @@ function describeFailure(error) {
 
 self.onmessage = async ({ data: { id, command, payload } }) => {
   const progress = (stage, fraction) => self.postMessage(progressEvent(id, stage, fraction));
-  const handler = handlers[command];
   try {
-    if (!handler) throw new Error(`unknown command "${command}"`);
-    const owned = ownedBuffers(await handler(payload ?? {}, progress));
+    if (!Object.hasOwn(handlers, command)) throw new Error(`unknown command "${command}"`);
+    const owned = ownedBuffers(await handlers[command](payload ?? {}, progress));
     self.postMessage(resultEvent(id, owned.payload), owned.transfer);
   } catch (error) {
     const { kind, message } = describeFailure(error);
