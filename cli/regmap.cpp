@@ -1,0 +1,248 @@
+// `tessera regmap info|catalog|tiling`: regular maps from Conder's census (thesis Ch. 9).
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "base/error.h"
+#include "base/limits.h"
+#include "commands.h"
+#include "regmap/catalog.h"
+#include "regmap/conder_format.h"
+#include "regmap/finite_group.h"
+#include "usage.h"
+
+namespace tessera::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kCatalogFile = "regmaps/catalog_g2-101.tsv";
+
+constexpr const char* kRegmapHelp =
+    "usage: tessera regmap <subcommand> [options]\n"
+    "\n"
+    "Regular maps: the symmetry group <R, S, T | R^p, S^q, T^2, (RS)^2, (RT)^2, (ST)^2, ...> of a\n"
+    "map from Conder's census (genus 2-101 shipped), enumerated into its flags.\n"
+    "\n"
+    "  info <map>      |G|, V, E, F, genus, type, Petrie length and the time it took\n"
+    "  catalog         list the shipped maps, filtered by genus or type\n"
+    "\n"
+    "<map> is a catalog name (R3.1, or R3.1' for the dual) or a file holding one entry in "
+    "Conder's\n"
+    "text format ('R3.1 : Type {3,7}_8 Order 336' and the relators '[ T^2, ... ]').\n"
+    "The catalog is read from $TESSERA_DATA_DIR/regmaps/, else from data/ next to the binary, "
+    "else\n"
+    "from the source tree it was built from.\n"
+    "'tessera regmap <subcommand> --help' tells more.\n";
+
+constexpr const char* kInfoHelp =
+    "usage: tessera regmap info <map> [--json] [--max-cosets N] [--max-seconds S]\n"
+    "\n"
+    "Enumerates the map's symmetry group (Todd-Coxeter) and prints its figures.\n"
+    "  <map>            a catalog name (R3.1, R2.4') or a presentation file in Conder's format\n"
+    "  --json           print {name, p, q, order, vertices, edges, faces, genus, petrie, seconds}\n"
+    "  --max-cosets N   largest coset table (rows) before giving up (default 4000000)\n"
+    "  --max-seconds S  longest enumeration before giving up (default 20)\n";
+
+constexpr const char* kCatalogHelp =
+    "usage: tessera regmap catalog [--genus G] [--type p,q] [--json]\n"
+    "\n"
+    "Lists the shipped maps (name, genus, type, Petrie length, |Aut|, V, E, F).\n"
+    "  --genus G    only maps of genus G\n"
+    "  --type p,q   only maps of type {p,q}; a type with p > q lists the duals (R3.1' for {7,3})\n"
+    "  --json       print a JSON array of the rows\n";
+
+bool wants_help(const Args& args) {
+  for (const std::string& a : args) {
+    if (a == "--help" || a == "-h") return true;
+  }
+  return false;
+}
+
+std::string read_text_file(const std::string& path, std::size_t max_bytes) {
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (ec) throw InputError("cannot read '" + path + "': " + ec.message());
+  check_limit(static_cast<std::size_t>(size), max_bytes, "the file '" + path + "' (bytes)",
+              "--max-file-bytes");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot open '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+fs::path executable_dir() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path() : exe.parent_path();
+}
+
+// $TESSERA_DATA_DIR, then data/ next to the binary (an installed layout), then the source tree.
+std::string catalog_path() {
+  if (const char* dir = std::getenv("TESSERA_DATA_DIR"); dir && *dir)
+    return (fs::path(dir) / kCatalogFile).string();
+  const fs::path beside = executable_dir() / "data" / kCatalogFile;
+  if (fs::exists(beside)) return beside.string();
+  return (fs::path(TESSERA_DATA_DIR) / kCatalogFile).string();
+}
+
+Limits limits_from(const ParsedArgs& parsed) {
+  Limits limits;
+  limits.max_coset_table = parsed.count("--max-cosets", limits.max_coset_table);
+  limits.max_coset_seconds = parsed.number("--max-seconds", limits.max_coset_seconds);
+  if (limits.max_coset_seconds <= 0) throw UsageError("--max-seconds expects a positive number");
+  return limits;
+}
+
+// A catalog name, or else a presentation file.
+regmap::Presentation resolve_map(const std::string& map, const Limits& limits) {
+  std::error_code ec;
+  if (fs::is_regular_file(map, ec))
+    return regmap::parse_conder_entry(read_text_file(map, limits.max_file_bytes), map);
+  if (map.empty() || map[0] != 'R')
+    throw InputError("'" + map +
+                     "' is neither a presentation file nor a catalog name (R3.1, R2.4')");
+  return regmap::presentation_of(regmap::find_map(regmap::read_catalog(catalog_path()), map));
+}
+
+ParsedArgs parse_one_map(const Args& args, const std::string& command) {
+  ParsedArgs parsed =
+      parse_args(args, {"--max-cosets", "--max-seconds", "-o"}, {"--json"}, command);
+  if (parsed.positional.size() != 1)
+    throw UsageError("'tessera " + command +
+                     "' takes one map (a catalog name or a file); run "
+                     "'tessera " +
+                     command + " --help'");
+  return parsed;
+}
+
+int info(const Args& args) {
+  if (wants_help(args)) {
+    std::fputs(kInfoHelp, stdout);
+    return 0;
+  }
+  const ParsedArgs parsed = parse_one_map(args, "regmap info");
+  if (parsed.has("-o")) throw UsageError("'tessera regmap info' writes no file; drop -o");
+  const Limits limits = limits_from(parsed);
+  const regmap::Presentation presentation = resolve_map(parsed.positional[0], limits);
+  const auto start = std::chrono::steady_clock::now();
+  const regmap::FiniteGroup group = regmap::enumerate_group(presentation, limits);
+  const regmap::MapFigures f = regmap::map_figures(group);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  regmap::check_stated_figures(presentation, f);
+  if (parsed.has("--json")) {
+    Json out = {
+        {"name", presentation.name},  {"p", presentation.p},
+        {"q", presentation.q},        {"order", f.order},
+        {"vertices", f.vertices},     {"edges", f.edges},
+        {"faces", f.faces},           {"genus", f.orientable ? Json(f.genus) : Json(nullptr)},
+        {"orientable", f.orientable}, {"euler", f.euler},
+        {"petrie", f.petrie},         {"seconds", seconds}};
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
+  }
+  std::printf("%s: type {%d,%d}, |G| = %zu\n", presentation.name.c_str(), presentation.p,
+              presentation.q, f.order);
+  std::printf("  V = %zu, E = %zu, F = %zu, V - E + F = %lld\n", f.vertices, f.edges, f.faces,
+              f.euler);
+  if (f.orientable) {
+    std::printf("  genus %d\n", f.genus);
+  } else {
+    std::printf("  non-orientable\n");
+  }
+  std::printf("  Petrie length %zu\n  enumerated in %.3f s\n", f.petrie, seconds);
+  return 0;
+}
+
+// "7,3" -> {7, 3}
+std::pair<int, int> parse_type_option(const std::string& text) {
+  int p = 0, q = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%d,%d%c", &p, &q, &tail) != 2 || p < 2 || q < 2)
+    throw UsageError("--type expects p,q (e.g. --type 3,7), got '" + text + "'");
+  return {p, q};
+}
+
+Json catalog_row_json(const regmap::CatalogEntry& e) {
+  return {{"name", e.name},
+          {"genus", e.genus},
+          {"p", e.p},
+          {"q", e.q},
+          {"petrie", e.petrie},
+          {"order", e.order},
+          {"vertices", e.vertices},
+          {"edges", e.edges},
+          {"faces", e.faces}};
+}
+
+int catalog(const Args& args) {
+  if (wants_help(args)) {
+    std::fputs(kCatalogHelp, stdout);
+    return 0;
+  }
+  const ParsedArgs parsed = parse_args(args, {"--genus", "--type"}, {"--json"}, "regmap catalog");
+  if (!parsed.positional.empty())
+    throw UsageError(
+        "'tessera regmap catalog' takes no positional arguments; run "
+        "'tessera regmap catalog --help'");
+  const bool by_genus = parsed.has("--genus");
+  const auto genus = static_cast<int>(parsed.count("--genus", 0));
+  const bool by_type = parsed.has("--type");
+  const auto [p, q] = by_type ? parse_type_option(parsed.value("--type")) : std::pair{0, 0};
+  std::vector<regmap::CatalogEntry> rows;
+  for (const regmap::CatalogEntry& entry : regmap::read_catalog(catalog_path())) {
+    if (by_genus && entry.genus != genus) continue;
+    if (!by_type) {
+      rows.push_back(entry);
+    } else if (entry.p == p && entry.q == q) {
+      rows.push_back(entry);
+    } else if (entry.p == q && entry.q == p) {
+      rows.push_back(regmap::dual(entry));
+    }
+  }
+  if (parsed.has("--json")) {
+    Json out = Json::array();
+    for (const auto& e : rows) out.push_back(catalog_row_json(e));
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
+  }
+  std::printf("%-10s %5s %-10s %6s %7s %6s %6s %6s\n", "name", "genus", "type", "petrie", "|Aut|",
+              "V", "E", "F");
+  for (const auto& e : rows) {
+    const std::string type = "{" + std::to_string(e.p) + "," + std::to_string(e.q) + "}";
+    std::printf("%-10s %5d %-10s %6d %7zu %6zu %6zu %6zu\n", e.name.c_str(), e.genus, type.c_str(),
+                e.petrie, e.order, e.vertices, e.edges, e.faces);
+  }
+  std::fprintf(stderr, "%zu maps\n", rows.size());
+  return 0;
+}
+
+}  // namespace
+
+int regmap_command(const Args& args) {
+  if (args.empty()) {
+    std::fputs(kRegmapHelp, stderr);
+    return 2;
+  }
+  const std::string& sub = args[0];
+  const Args rest(args.begin() + 1, args.end());
+  if (sub == "--help" || sub == "-h" || sub == "help") {
+    std::fputs(kRegmapHelp, stdout);
+    return 0;
+  }
+  if (sub == "info") return info(rest);
+  if (sub == "catalog") return catalog(rest);
+  throw UsageError("unknown subcommand 'regmap " + sub + "'; run 'tessera regmap --help'");
+}
+
+}  // namespace tessera::cli
