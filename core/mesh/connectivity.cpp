@@ -66,9 +66,10 @@ void link_boundary(const Mesh& mesh, Connectivity& c) {
   for (Index h = static_cast<Index>(c.corner_count); h < c.halfedge_count(); ++h) {
     const Index from = c.from_vertex(h);
     if (c.vertex_halfedge[from] != kNoIndex && c.is_boundary_halfedge(c.vertex_halfedge[from]))
-      throw TopologyError("non-manifold " + describe_vertex(mesh, from) +
-                          ": two separate boundary stretches meet there (the surface is pinched)" +
-                          kRunValidation);
+      throw TopologyError(
+          "non-manifold " + describe_vertex(mesh, from) +
+          ": two separate boundary stretches meet there (the surface is pinched); split the "
+          "vertex or fill the gap between the sheets in a mesh editor");
     c.vertex_halfedge[from] = h;
   }
   for (Index h = static_cast<Index>(c.corner_count); h < c.halfedge_count(); ++h) {
@@ -93,9 +94,10 @@ void check_vertex_fans(const Mesh& mesh, const Connectivity& c) {
       h = c.next_outgoing(h);
     } while (h != start && reached <= outgoing[v]);
     if (reached != outgoing[v])
-      throw TopologyError("non-manifold " + describe_vertex(mesh, v) +
-                          ": it joins separate fans of faces (two sheets touch at one point)" +
-                          kRunValidation);
+      throw TopologyError(
+          "non-manifold " + describe_vertex(mesh, v) +
+          ": it joins separate fans of faces (two sheets touch at one point); split the "
+          "vertex or separate the sheets in a mesh editor");
   }
 }
 

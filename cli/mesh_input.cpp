@@ -1,0 +1,26 @@
+#include "mesh_input.h"
+
+namespace tessera::cli {
+
+std::set<std::string> mesh_input_options() {
+  return {"--max-vertices", "--max-faces", "--max-file-bytes", "--weld-tolerance"};
+}
+
+const char* const kMeshInputHelp =
+    "  --max-vertices N     refuse meshes with more vertices (default 4000000)\n"
+    "  --max-faces N        refuse meshes with more faces (default 8000000)\n"
+    "  --max-file-bytes N   refuse larger files (default 1500000000)\n"
+    "  --weld-tolerance X   weld vertices closer than X times the bounding-box diagonal\n"
+    "                       (default 1e-7; 0 welds identical positions only; -1 never welds)\n";
+
+LoadedMesh load_mesh_argument(const std::string& path, const ParsedArgs& args) {
+  Limits limits;
+  limits.max_vertices = args.count("--max-vertices", limits.max_vertices);
+  limits.max_faces = args.count("--max-faces", limits.max_faces);
+  limits.max_file_bytes = args.count("--max-file-bytes", limits.max_file_bytes);
+  ValidationOptions options;
+  options.weld_tolerance = args.number("--weld-tolerance", options.weld_tolerance);
+  return load_mesh_file(path, limits, options);
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,55 @@
+#include "export/write_mesh.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+
+#include "base/error.h"
+#include "export/glb.h"
+#include "export/writers.h"
+
+namespace tessera {
+namespace {
+
+std::string lower_extension(const std::string& file_name) {
+  const std::size_t slash = file_name.find_last_of("/\\");
+  const std::size_t dot = file_name.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string extension = file_name.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_mesh(const Mesh& mesh, const std::string& file_name,
+                                      const MeshWriteOptions& options) {
+  const std::string extension = lower_extension(file_name);
+  if (extension == "obj") return write_obj(mesh);
+  if (extension == "off") return write_off(mesh);
+  if (extension == "ply") return write_ply(mesh, options.ply_binary);
+  if (extension == "stl") return write_stl(mesh);
+  if (extension == "glb") {
+    Scene scene;
+    scene.mesh = mesh;
+    return write_glb(scene);
+  }
+  throw InputError(file_name +
+                   ": cannot tell the output format from the extension; use .obj, "
+                   ".ply, .glb, .off or .stl");
+}
+
+void write_file_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError("cannot write " + path + ": is the folder there and writable?");
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+  if (!out.flush()) throw InputError("cannot write " + path + ": the disk may be full");
+}
+
+void write_mesh_file(const std::string& path, const Mesh& mesh, const MeshWriteOptions& options) {
+  write_file_bytes(path, encode_mesh(mesh, path, options));
+}
+
+}  // namespace tessera

@@ -1,0 +1,302 @@
+#include "mesh/validate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+#include "base/error.h"
+#include "mesh/connectivity.h"
+#include "mesh/describe.h"
+#include "mesh/edge_table.h"
+#include "mesh/exact_welder.h"
+#include "mesh/geometry.h"
+#include "mesh/topology.h"
+
+namespace tessera {
+namespace {
+
+std::string format_number(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+// The flat arrays must describe faces at all before anything else can be checked.
+void check_arrays(const Mesh& mesh) {
+  if (mesh.face_offsets.empty() || mesh.face_offsets.front() != 0 ||
+      mesh.face_offsets.back() != mesh.face_vertices.size() ||
+      !std::is_sorted(mesh.face_offsets.begin(), mesh.face_offsets.end()))
+    throw TopologyError(
+        "the face offsets do not describe the face vertex list (they must start at "
+        "0, grow, and end at its size)");
+  for (const auto& [name, values] : mesh.face_attributes)
+    if (values.size() != mesh.face_count())
+      throw TopologyError("face attribute '" + name + "' has " + std::to_string(values.size()) +
+                          " values for " + std::to_string(mesh.face_count()) + " faces");
+  if (mesh.face_count() == 0)
+    throw TopologyError(
+        "the mesh has no faces; Tessera needs a surface mesh (is this a point cloud?)");
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.face_size(f) < 3)
+      throw TopologyError("face " + std::to_string(f) + " has " +
+                          std::to_string(mesh.face_size(f)) + " corners; a face needs at least 3");
+    for (Index v : mesh.face(f))
+      if (v >= mesh.vertex_count())
+        throw TopologyError("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                            ", but the mesh has " + std::to_string(mesh.vertex_count()) +
+                            " vertices (numbered from 0)");
+  }
+}
+
+void check_finite(const Mesh& mesh) {
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    if (!mesh.positions[v].allFinite())
+      throw GeometryError("vertex " + std::to_string(v) +
+                          " has a non-finite coordinate (NaN or infinity); fix or remove it in the "
+                          "program that wrote the mesh");
+}
+
+// Maps every vertex to the first earlier vertex within `tolerance` (a uniform grid of that cell
+// size finds candidates in the 27 surrounding cells), or to itself.
+std::vector<Index> weld_map(const Mesh& mesh, double tolerance) {
+  std::vector<Index> target(mesh.vertex_count());
+  if (tolerance <= 0) {
+    Mesh unique;
+    ExactWelder welder(unique);
+    std::vector<Index> first;  // unique vertex -> its first occurrence
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+      const Index u = welder.vertex(mesh.positions[v]);
+      if (u == first.size()) first.push_back(v);
+      target[v] = first[u];
+    }
+    return target;
+  }
+  const Eigen::Vector3d origin = bounding_box(mesh).min;
+  auto cell_of = [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector3d c = ((p - origin) / tolerance).array().floor();
+    return Eigen::Vector3i(static_cast<int>(c.x()), static_cast<int>(c.y()),
+                           static_cast<int>(c.z()));
+  };
+  auto key = [](const Eigen::Vector3i& c) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.x())) << 42) ^
+           (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.y())) << 21) ^
+           static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.z()));
+  };
+  std::unordered_multimap<std::uint64_t, Index> grid;
+  grid.reserve(mesh.vertex_count());
+  const double squared = tolerance * tolerance;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    const Eigen::Vector3d& p = mesh.positions[v];
+    const Eigen::Vector3i cell = cell_of(p);
+    target[v] = v;
+    for (int dx = -1; dx <= 1 && target[v] == v; ++dx)
+      for (int dy = -1; dy <= 1 && target[v] == v; ++dy)
+        for (int dz = -1; dz <= 1 && target[v] == v; ++dz) {
+          const auto [begin, end] = grid.equal_range(key(cell + Eigen::Vector3i(dx, dy, dz)));
+          for (auto it = begin; it != end; ++it)
+            if ((mesh.positions[it->second] - p).squaredNorm() <= squared) {
+              target[v] = it->second;
+              break;
+            }
+        }
+    if (target[v] == v) grid.emplace(key(cell), v);
+  }
+  return target;
+}
+
+std::size_t weld_vertices(Mesh& mesh, double tolerance) {
+  const std::vector<Index> target = weld_map(mesh, tolerance);
+  std::size_t welded = 0;
+  for (Index v = 0; v < target.size(); ++v) welded += target[v] != v;
+  if (welded > 0)
+    for (Index& v : mesh.face_vertices) v = target[v];
+  return welded;
+}
+
+// Collapses repeated consecutive corners; drops faces left with fewer than three corners or with a
+// vertex repeated elsewhere (a pinched polygon has no sensible surface).
+void repair_faces(Mesh& mesh, ValidationReport& report) {
+  Mesh repaired;
+  repaired.positions = std::move(mesh.positions);
+  std::vector<Index> kept_faces;
+  std::vector<Index> corners;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    corners.clear();
+    for (Index v : mesh.face(f))
+      if (corners.empty() || corners.back() != v) corners.push_back(v);
+    while (corners.size() > 1 && corners.back() == corners.front()) corners.pop_back();
+    std::vector<Index> sorted = corners;
+    std::sort(sorted.begin(), sorted.end());
+    if (corners.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      ++report.dropped_faces;
+      continue;
+    }
+    report.collapsed_faces += corners.size() != mesh.face_size(f);
+    repaired.add_face(corners);
+    kept_faces.push_back(f);
+  }
+  for (const auto& [name, values] : mesh.face_attributes) {
+    auto& kept = repaired.face_attributes[name];
+    for (Index f : kept_faces) kept.push_back(values[f]);
+  }
+  mesh = std::move(repaired);
+  if (mesh.face_count() == 0)
+    throw GeometryError("every face is degenerate (fewer than three distinct vertices" +
+                        std::string(report.welded_vertices ? ", after welding duplicates" : "") +
+                        "); the mesh has no surface");
+}
+
+std::size_t remove_unreferenced_vertices(Mesh& mesh) {
+  std::vector<Index> new_index(mesh.vertex_count(), kNoIndex);
+  for (Index v : mesh.face_vertices) new_index[v] = 0;
+  std::vector<Eigen::Vector3d> kept;
+  kept.reserve(mesh.vertex_count());
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    if (new_index[v] == kNoIndex) continue;
+    new_index[v] = static_cast<Index>(kept.size());
+    kept.push_back(mesh.positions[v]);
+  }
+  const std::size_t removed = mesh.vertex_count() - kept.size();
+  if (removed > 0) {
+    for (Index& v : mesh.face_vertices) v = new_index[v];
+    mesh.positions = std::move(kept);
+  }
+  return removed;
+}
+
+// Counts zero-area faces; a mesh of nothing else has no surface to work on.
+std::size_t count_zero_area_faces(const Mesh& mesh, double tolerance, Index& first) {
+  const double diagonal = bounding_box(mesh).diagonal();
+  const double threshold = tolerance * diagonal * diagonal;
+  std::size_t count = 0;
+  first = kNoIndex;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    if (face_area(mesh, f) > threshold) continue;
+    if (count++ == 0) first = f;
+  }
+  if (count == mesh.face_count())
+    throw GeometryError("all " + std::to_string(count) +
+                        " faces have zero area (the vertices of each are collinear or coincide); "
+                        "the mesh has no surface");
+  return count;
+}
+
+void check_manifold_edges(const Mesh& mesh, const EdgeTable& table,
+                          const std::vector<Index>& corner_face) {
+  for (Index e = 0; e < table.edge_count(); ++e) {
+    const auto corners = table.corners(e);
+    if (corners.size() <= 2) continue;
+    std::string faces;
+    for (std::size_t i = 0; i < corners.size() && i < 4; ++i)
+      faces += (i ? ", " : "") + std::to_string(corner_face[corners[i]]);
+    if (corners.size() > 4) faces += ", ...";
+    throw TopologyError("non-manifold " +
+                        describe_edge(mesh, table.edge_vertices[e][0], table.edge_vertices[e][1]) +
+                        ": it is shared by " + std::to_string(corners.size()) + " faces (" + faces +
+                        "), a surface edge has at most 2; remove the extra sheets or duplicate "
+                        "faces in a mesh editor");
+  }
+}
+
+void reverse_face(Mesh& mesh, Index f) {
+  std::reverse(mesh.face_vertices.begin() + mesh.face_offsets[f] + 1,
+               mesh.face_vertices.begin() + mesh.face_offsets[f + 1]);
+}
+
+// Breadth-first over the faces of each component: a neighbour across an edge must run along it in
+// the opposite direction. A contradiction means the surface is non-orientable. Within a component
+// the orientation of the majority of faces wins, so that few faces are flipped.
+std::size_t orient_faces(Mesh& mesh, const EdgeTable& table,
+                         const std::vector<Index>& corner_face) {
+  std::vector<signed char> flip(mesh.face_count(), -1);  // -1 unvisited, 0 keep, 1 flip
+  std::vector<Index> component;
+  std::size_t flipped = 0;
+  for (Index seed = 0; seed < mesh.face_count(); ++seed) {
+    if (flip[seed] >= 0) continue;
+    flip[seed] = 0;
+    component.assign(1, seed);
+    for (std::size_t i = 0; i < component.size(); ++i) {
+      const Index f = component[i];
+      for (Index c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c) {
+        const auto corners = table.corners(table.corner_edge[c]);
+        if (corners.size() != 2) continue;
+        const Index d = corners[0] == c ? corners[1] : corners[0];
+        const Index g = corner_face[d];
+        const bool same_direction = mesh.face_vertices[c] == mesh.face_vertices[d];
+        const signed char wanted = static_cast<signed char>(flip[f] ^ same_direction);
+        if (flip[g] < 0) {
+          flip[g] = wanted;
+          component.push_back(g);
+        } else if (flip[g] != wanted) {
+          throw TopologyError(
+              "the surface is not orientable (like a Moebius strip or a Klein bottle): going "
+              "around "
+              "from face " +
+              std::to_string(seed) + " to " + describe_face(mesh, g) +
+              " gives it both orientations; Tessera needs an orientable "
+              "surface, cut it open or rebuild it");
+        }
+      }
+    }
+    std::size_t to_flip = 0;
+    for (Index f : component) to_flip += flip[f];
+    const bool invert = 2 * to_flip > component.size();
+    for (Index f : component) {
+      if (static_cast<bool>(flip[f]) != invert) {
+        reverse_face(mesh, f);
+        ++flipped;
+      }
+    }
+  }
+  return flipped;
+}
+
+void add_warnings(const Mesh& mesh, const ValidationOptions& options, Index first_zero_area,
+                  ValidationReport& r) {
+  auto add = [&](std::size_t count, const std::string& sentence) {
+    if (count > 0) r.warnings.push_back(std::to_string(count) + " " + sentence);
+  };
+  add(r.welded_vertices, "duplicate vertices welded (closer than " +
+                             format_number(options.weld_tolerance) +
+                             " x the bounding-box diagonal)");
+  add(r.dropped_faces, "degenerate faces dropped (fewer than three distinct vertices)");
+  add(r.collapsed_faces, "faces with repeated corners collapsed to fewer corners");
+  add(r.unreferenced_vertices, "vertices in no face removed");
+  if (r.zero_area_faces > 0)
+    add(r.zero_area_faces, "faces have zero area, e.g. " + describe_face(mesh, first_zero_area) +
+                               "; results near them may be inaccurate");
+  add(r.flipped_faces, "faces flipped to agree with the orientation of their neighbours");
+  if (r.components > 1)
+    r.warnings.push_back("the mesh has " + std::to_string(r.components) +
+                         " connected components; each is a separate surface");
+}
+
+}  // namespace
+
+ValidationReport validate_mesh(Mesh& mesh, const ValidationOptions& options) {
+  ValidationReport report;
+  check_arrays(mesh);
+  check_finite(mesh);
+  if (options.weld_tolerance >= 0)
+    report.welded_vertices =
+        weld_vertices(mesh, options.weld_tolerance * bounding_box(mesh).diagonal());
+  repair_faces(mesh, report);
+  report.unreferenced_vertices = remove_unreferenced_vertices(mesh) - report.welded_vertices;
+  Index first_zero_area = kNoIndex;
+  report.zero_area_faces =
+      count_zero_area_faces(mesh, options.zero_area_tolerance, first_zero_area);
+
+  const std::vector<Index> corner_face = corner_faces(mesh);
+  const EdgeTable table = build_edge_table(mesh);
+  check_manifold_edges(mesh, table, corner_face);
+  report.flipped_faces = orient_faces(mesh, table, corner_face);
+
+  // Non-manifold vertices are the last thing to find; build_connectivity() names them.
+  const Connectivity connectivity = build_connectivity(mesh);
+  report.components = connected_components(mesh, connectivity).count;
+  add_warnings(mesh, options, first_zero_area, report);
+  return report;
+}
+
+}  // namespace tessera
