@@ -23,6 +23,24 @@ Mesh triangle_mesh(std::vector<Eigen::Vector3d> positions,
   return mesh;
 }
 
+std::size_t remove_unreferenced_vertices(Mesh& mesh) {
+  std::vector<Index> new_index(mesh.vertex_count(), kNoIndex);
+  for (Index v : mesh.face_vertices) new_index[v] = 0;
+  std::vector<Eigen::Vector3d> kept;
+  kept.reserve(mesh.vertex_count());
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    if (new_index[v] == kNoIndex) continue;
+    new_index[v] = static_cast<Index>(kept.size());
+    kept.push_back(mesh.positions[v]);
+  }
+  const std::size_t removed = mesh.vertex_count() - kept.size();
+  if (removed > 0) {
+    for (Index& v : mesh.face_vertices) v = new_index[v];
+    mesh.positions = std::move(kept);
+  }
+  return removed;
+}
+
 Mesh triangulate(const Mesh& mesh) {
   Mesh out;
   out.positions = mesh.positions;

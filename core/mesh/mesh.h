@@ -59,6 +59,9 @@ struct Mesh {
 Mesh triangle_mesh(std::vector<Eigen::Vector3d> positions,
                    const std::vector<std::array<Index, 3>>& triangles);
 
+// Removes the vertices that no face uses, renumbering the others in order; returns how many.
+std::size_t remove_unreferenced_vertices(Mesh& mesh);
+
 // Each polygon with n > 3 corners becomes n - 2 triangles fanned from its first corner; face
 // attributes are copied to every triangle of their polygon. Triangles stay as they are.
 Mesh triangulate(const Mesh& mesh);

@@ -158,7 +158,6 @@ std::uint64_t min_element_bytes(const PlyElement& element, PlyEncoding encoding)
 // allocation.
 void check_sizes(const PlyHeader& header, std::size_t body_bytes, const std::string& file_name,
                  const Limits& limits) {
-  std::uint64_t needed = 0;
   for (const PlyElement& element : header.elements) {
     if (element.name == "vertex")
       check_limit(element.count, limits.max_vertices, "the vertex element of " + file_name,
@@ -166,6 +165,9 @@ void check_sizes(const PlyHeader& header, std::size_t body_bytes, const std::str
     if (element.name == "face")
       check_limit(element.count, limits.max_faces, "the face element of " + file_name,
                   "--max-faces");
+  }
+  std::uint64_t needed = 0;
+  for (const PlyElement& element : header.elements) {
     const std::uint64_t per_element = min_element_bytes(element, header.encoding);
     if (per_element > 0 && element.count > (body_bytes + 1) / per_element)
       throw ParseError(file_name + ": the header announces " + std::to_string(element.count) + " " +

@@ -147,24 +147,6 @@ void repair_faces(Mesh& mesh, ValidationReport& report) {
                         "); the mesh has no surface");
 }
 
-std::size_t remove_unreferenced_vertices(Mesh& mesh) {
-  std::vector<Index> new_index(mesh.vertex_count(), kNoIndex);
-  for (Index v : mesh.face_vertices) new_index[v] = 0;
-  std::vector<Eigen::Vector3d> kept;
-  kept.reserve(mesh.vertex_count());
-  for (Index v = 0; v < mesh.vertex_count(); ++v) {
-    if (new_index[v] == kNoIndex) continue;
-    new_index[v] = static_cast<Index>(kept.size());
-    kept.push_back(mesh.positions[v]);
-  }
-  const std::size_t removed = mesh.vertex_count() - kept.size();
-  if (removed > 0) {
-    for (Index& v : mesh.face_vertices) v = new_index[v];
-    mesh.positions = std::move(kept);
-  }
-  return removed;
-}
-
 // Counts zero-area faces; a mesh of nothing else has no surface to work on.
 std::size_t count_zero_area_faces(const Mesh& mesh, double tolerance, Index& first) {
   const double diagonal = bounding_box(mesh).diagonal();
