@@ -49,31 +49,27 @@ export function polygonEdges(triangles, triangleFace) {
   for (let first = 0; first < triangleFace.length; ) {
     let end = first + 1;
     while (end < triangleFace.length && triangleFace[end] === triangleFace[first]) end++;
-    for (const [a, b] of polygonBoundary(triangles, first, end)) {
-      edges[count++] = a;
-      edges[count++] = b;
+    const corners = triangles.subarray(3 * first, 3 * end);
+    for (let side = 0; side < corners.length; side++) {
+      if (sideCount(corners, corners[side], corners[nextCorner(side)]) > 1) continue;
+      edges[count++] = corners[side];
+      edges[count++] = corners[nextCorner(side)];
     }
     first = end;
   }
   return edges.slice(0, count);
 }
 
-function triangleSides(triangles, t) {
-  const [a, b, c] = triangles.subarray(3 * t, 3 * t + 3);
-  return [
-    [a, b],
-    [b, c],
-    [c, a],
-  ];
-}
+// Corner i of a triangle list and the next corner of the same triangle bound side i.
+const nextCorner = (i) => (i % 3 === 2 ? i - 2 : i + 1);
 
-// The sides of triangles [first, end) that are not shared by two of them.
-function polygonBoundary(triangles, first, end) {
-  if (end - first === 1) return triangleSides(triangles, first);
-  const sides = [];
-  for (let t = first; t < end; t++) sides.push(...triangleSides(triangles, t));
-  const key = ([a, b]) => (a < b ? `${a},${b}` : `${b},${a}`);
-  const uses = new Map();
-  for (const side of sides) uses.set(key(side), (uses.get(key(side)) ?? 0) + 1);
-  return sides.filter((side) => uses.get(key(side)) === 1);
+// How many sides of the triangles in `corners` join a and b, in either direction.
+function sideCount(corners, a, b) {
+  let count = 0;
+  for (let side = 0; side < corners.length; side++) {
+    const c = corners[side];
+    const d = corners[nextCorner(side)];
+    if ((c === a && d === b) || (c === b && d === a)) count++;
+  }
+  return count;
 }
