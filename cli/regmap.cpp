@@ -1,20 +1,20 @@
 // `tessera regmap info|catalog|tiling`: regular maps from Conder's census (thesis Ch. 9).
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "base/error.h"
 #include "base/limits.h"
 #include "commands.h"
+#include "export/write_mesh.h"
+#include "mesh/readers.h"
 #include "regmap/catalog.h"
 #include "regmap/conder_format.h"
 #include "regmap/finite_group.h"
+#include "regmap/tiling_svg.h"
+#include "regmap/triangle_tiling.h"
 #include "usage.h"
 
 namespace tessera::cli {
@@ -34,6 +34,7 @@ constexpr const char* kRegmapHelp =
     "\n"
     "  info <map>      |G|, V, E, F, genus, type, Petrie length and the time it took\n"
     "  catalog         list the shipped maps, filtered by genus or type\n"
+    "  tiling <map>    draw the map's fundamental polygon Tri(G) with its boundary pairs as SVG\n"
     "\n"
     "<map> is a catalog name (R3.1, or R3.1' for the dual) or a file holding one entry in "
     "Conder's\n"
@@ -60,24 +61,25 @@ constexpr const char* kCatalogHelp =
     "  --type p,q   only maps of type {p,q}; a type with p > q lists the duals (R3.1' for {7,3})\n"
     "  --json       print a JSON array of the rows\n";
 
+constexpr const char* kTilingHelp =
+    "usage: tessera regmap tiling <map> -o tiling.svg [--json] [--max-cosets N] [--max-seconds S]\n"
+    "\n"
+    "Grows the map's fundamental polygon (thesis Sec. 9.3, Fig. 9.8): one triangle (pi/p, pi/q,\n"
+    "pi/2) per element of its group, face by face from the centre of the Poincare disk; the\n"
+    "polygon's boundary edges are paired by the group. Writes an SVG with the triangles coloured "
+    "by\n"
+    "face and each boundary pair numbered; prints the polygon's figures.\n"
+    "Torus maps are drawn in the plane, spherical (Platonic) maps on two hemispheres.\n"
+    "  -o FILE          the SVG to write (required)\n"
+    "  --json           print {name, geometry, triangles, boundary_pairs, polygon_vertices,\n"
+    "                   polygon_edges, polygon_euler, boundary_cycles, seconds}\n"
+    "  --max-cosets N, --max-seconds S   as for 'tessera regmap info'\n";
+
 bool wants_help(const Args& args) {
   for (const std::string& a : args) {
     if (a == "--help" || a == "-h") return true;
   }
   return false;
-}
-
-std::string read_text_file(const std::string& path, std::size_t max_bytes) {
-  std::error_code ec;
-  const auto size = fs::file_size(path, ec);
-  if (ec) throw InputError("cannot read '" + path + "': " + ec.message());
-  check_limit(static_cast<std::size_t>(size), max_bytes, "the file '" + path + "' (bytes)",
-              "--max-file-bytes");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 fs::path executable_dir() {
@@ -106,8 +108,11 @@ Limits limits_from(const ParsedArgs& parsed) {
 // A catalog name, or else a presentation file.
 regmap::Presentation resolve_map(const std::string& map, const Limits& limits) {
   std::error_code ec;
-  if (fs::is_regular_file(map, ec))
-    return regmap::parse_conder_entry(read_text_file(map, limits.max_file_bytes), map);
+  if (fs::is_regular_file(map, ec)) {
+    const std::vector<std::uint8_t> bytes = read_file_bytes(map, limits);
+    return regmap::parse_conder_entry(
+        std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), map);
+  }
   if (map.empty() || map[0] != 'R')
     throw InputError("'" + map +
                      "' is neither a presentation file nor a catalog name (R3.1, R2.4')");
@@ -227,6 +232,56 @@ int catalog(const Args& args) {
   return 0;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int tiling(const Args& args) {
+  if (wants_help(args)) {
+    std::fputs(kTilingHelp, stdout);
+    return 0;
+  }
+  const ParsedArgs parsed = parse_one_map(args, "regmap tiling");
+  const std::string output = parsed.value("-o");
+  if (output.empty())
+    throw UsageError(
+        "'tessera regmap tiling' needs -o FILE.svg; run 'tessera regmap tiling --help'");
+  const Limits limits = limits_from(parsed);
+  const regmap::Presentation presentation = resolve_map(parsed.positional[0], limits);
+  const auto start = std::chrono::steady_clock::now();
+  const regmap::FiniteGroup group = regmap::enumerate_group(presentation, limits);
+  const regmap::MapFigures f = regmap::map_figures(group);
+  regmap::check_stated_figures(presentation, f);
+  const regmap::TriangleTiling tiling = regmap::build_tiling(group);
+  const regmap::PolygonShape shape = regmap::polygon_shape(tiling);
+  const double seconds = seconds_since(start);
+  const std::string title = presentation.name + " {" + std::to_string(presentation.p) + "," +
+                            std::to_string(presentation.q) + "}: " + std::to_string(f.order) +
+                            " triangles, " + std::to_string(tiling.pairs.size()) +
+                            " boundary pairs";
+  const std::string svg = regmap::tiling_svg(group, tiling, title);
+  write_file_bytes(output, std::vector<std::uint8_t>(svg.begin(), svg.end()));
+  if (parsed.has("--json")) {
+    const Json out = {{"name", presentation.name},
+                      {"geometry", regmap::to_string(tiling.geometry())},
+                      {"triangles", f.order},
+                      {"boundary_pairs", tiling.pairs.size()},
+                      {"polygon_vertices", shape.vertices},
+                      {"polygon_edges", shape.edges},
+                      {"polygon_euler", shape.euler},
+                      {"boundary_cycles", shape.boundary_cycles},
+                      {"seconds", seconds}};
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
+  }
+  std::printf(
+      "%s\n  %s geometry; polygon of %zu triangles, V - E + F = %lld, %zu boundary cycle(s)\n"
+      "  %zu boundary edge pairs; %.3f s\n  wrote %s\n",
+      title.c_str(), regmap::to_string(tiling.geometry()), f.order, shape.euler,
+      shape.boundary_cycles, tiling.pairs.size(), seconds, output.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int regmap_command(const Args& args) {
@@ -242,6 +297,7 @@ int regmap_command(const Args& args) {
   }
   if (sub == "info") return info(rest);
   if (sub == "catalog") return catalog(rest);
+  if (sub == "tiling") return tiling(rest);
   throw UsageError("unknown subcommand 'regmap " + sub + "'; run 'tessera regmap --help'");
 }
 

@@ -94,8 +94,33 @@ TEST(RegmapCli, CatalogFilters) {
   EXPECT_NE(all.out.find("R101."), std::string::npos);
 }
 
+TEST(RegmapCli, TilingWritesTheSvgAndReportsThePolygon) {
+  const auto svg = std::filesystem::temp_directory_path() / "tessera_regmap_cli_r31.svg";
+  std::filesystem::remove(svg);
+  const auto r = run_cli("regmap tiling R3.1 -o '" + svg.string() + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["geometry"], "hyperbolic");
+  EXPECT_EQ(j["triangles"], 336);
+  EXPECT_EQ(j["polygon_euler"], 1);
+  EXPECT_EQ(j["boundary_cycles"], 1);
+  EXPECT_GT(j["boundary_pairs"].get<int>(), 0);
+  ASSERT_TRUE(std::filesystem::exists(svg));
+  EXPECT_GT(std::filesystem::file_size(svg), 10000u);
+}
+
+TEST(RegmapCli, TilingNeedsAWritableOutput) {
+  const auto missing = run_cli("regmap tiling R2.4", true);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.out.find("needs -o FILE.svg"), std::string::npos) << missing.out;
+  const auto unwritable = run_cli("regmap tiling R2.4 -o /nonexistent-dir/t.svg", true);
+  EXPECT_EQ(unwritable.exit_code, 2);
+  EXPECT_NE(unwritable.out.find("cannot write"), std::string::npos) << unwritable.out;
+}
+
 TEST(RegmapCli, HelpEverywhere) {
-  for (const char* args : {"regmap --help", "regmap info --help", "regmap catalog --help"}) {
+  for (const char* args :
+       {"regmap --help", "regmap info --help", "regmap catalog --help", "regmap tiling --help"}) {
     const auto r = run_cli(args);
     EXPECT_EQ(r.exit_code, 0) << args;
     EXPECT_NE(r.out.find("usage: tessera regmap"), std::string::npos) << args;

@@ -9,6 +9,7 @@
 
 #include "regmap/catalog.h"
 #include "regmap/conder_format.h"
+#include "regmap/tiling_svg.h"
 #include "regmap/triangle_tiling.h"
 
 namespace tessera::regmap {
@@ -160,6 +161,34 @@ TEST(RegmapTiling, TorusMapIsAFundamentalDomainOfTranslations) {
     EXPECT_NEAR(std::abs(pair.pairing.a / std::conj(pair.pairing.a) - 1.0), 0.0, 1e-9);
     EXPECT_GT(std::abs(pair.pairing.b), 1.0);  // by at least one edge (3 edges here)
   }
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// One filled triangle per element, one numbered arrow per paired side (when large enough to
+// carry one), the title escaped.
+TEST(RegmapTiling, SvgOfR2_4) {
+  const FiniteGroup group =
+      enumerate_group(presentation_of(find_map(read_catalog(kCatalogPath), "R2.4")), Limits());
+  const TriangleTiling tiling = build_tiling(group);
+  const std::string svg = tiling_svg(group, tiling, "R2.4 <{5,10}>");
+  EXPECT_NE(svg.find("<title>R2.4 &lt;{5,10}&gt;</title>"), std::string::npos);
+  EXPECT_EQ(count(svg, "<polygon"), group.order() + 2 * tiling.pairs.size());
+  EXPECT_EQ(count(svg, "<text"), 2 * tiling.pairs.size());
+  for (std::size_t k = 1; k <= tiling.pairs.size(); ++k)
+    EXPECT_EQ(count(svg, ">" + std::to_string(k) + "</text>"), 2u) << k;
+}
+
+TEST(RegmapTiling, SvgOfASphericalMapShowsEveryTriangle) {
+  const FiniteGroup group = enumerate_group(type(4, 3, "T^2"), Limits());
+  const std::string svg = tiling_svg(group, build_tiling(group), "cube");
+  // Triangles across the equator are drawn in both hemispheres.
+  EXPECT_GE(count(svg, "<polygon"), group.order());
+  EXPECT_EQ(count(svg, "<circle"), 2u);
 }
 
 }  // namespace

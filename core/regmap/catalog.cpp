@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
-#include <sstream>
 
 #include "base/error.h"
+#include "mesh/readers.h"
 #include "regmap/conder_format.h"
 
 namespace tessera::regmap {
@@ -105,13 +104,16 @@ Catalog parse_catalog(std::string_view text, const std::string& source) {
 }
 
 Catalog read_catalog(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError("cannot read the regular-map catalog '" + path +
-                     "'; set TESSERA_DATA_DIR to the folder holding regmaps/");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_catalog(text.str(), path);
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes = read_file_bytes(path, Limits());
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) +
+                     " (the regular-map catalog; set TESSERA_DATA_DIR to the folder holding "
+                     "regmaps/)");
+  }
+  return parse_catalog(
+      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
 }
 
 CatalogEntry dual(const CatalogEntry& entry) {
