@@ -51,7 +51,8 @@ constexpr const char* kInfoHelp =
     "  <map>            a catalog name (R3.1, R2.4') or a presentation file in Conder's format\n"
     "  --json           print {name, p, q, order, vertices, edges, faces, genus, petrie, seconds}\n"
     "  --max-cosets N   largest coset table (rows) before giving up (default 4000000)\n"
-    "  --max-seconds S  longest enumeration before giving up (default 20)\n";
+    "  --max-seconds S  longest enumeration before giving up (default 20)\n"
+    "  --max-file-bytes N  largest presentation file read (default 1500000000)\n";
 
 constexpr const char* kCatalogHelp =
     "usage: tessera regmap catalog [--genus G] [--type p,q] [--json]\n"
@@ -73,7 +74,8 @@ constexpr const char* kTilingHelp =
     "  -o FILE          the SVG to write (required)\n"
     "  --json           print {name, geometry, triangles, boundary_pairs, polygon_vertices,\n"
     "                   polygon_edges, polygon_euler, boundary_cycles, seconds}\n"
-    "  --max-cosets N, --max-seconds S   as for 'tessera regmap info'\n";
+    "  --max-triangles N  largest group drawn (default 250000)\n"
+    "  --max-cosets N, --max-seconds S, --max-file-bytes N   as for 'tessera regmap info'\n";
 
 bool wants_help(const Args& args) {
   for (const std::string& a : args) {
@@ -101,6 +103,8 @@ Limits limits_from(const ParsedArgs& parsed) {
   Limits limits;
   limits.max_coset_table = parsed.count("--max-cosets", limits.max_coset_table);
   limits.max_coset_seconds = parsed.number("--max-seconds", limits.max_coset_seconds);
+  limits.max_file_bytes = parsed.count("--max-file-bytes", limits.max_file_bytes);
+  limits.max_tiling_triangles = parsed.count("--max-triangles", limits.max_tiling_triangles);
   if (limits.max_coset_seconds <= 0) throw UsageError("--max-seconds expects a positive number");
   return limits;
 }
@@ -120,8 +124,9 @@ regmap::Presentation resolve_map(const std::string& map, const Limits& limits) {
 }
 
 ParsedArgs parse_one_map(const Args& args, const std::string& command) {
-  ParsedArgs parsed =
-      parse_args(args, {"--max-cosets", "--max-seconds", "-o"}, {"--json"}, command);
+  ParsedArgs parsed = parse_args(
+      args, {"--max-cosets", "--max-seconds", "--max-file-bytes", "--max-triangles", "-o"},
+      {"--json"}, command);
   if (parsed.positional.size() != 1)
     throw UsageError("'tessera " + command +
                      "' takes one map (a catalog name or a file); run "
@@ -252,7 +257,7 @@ int tiling(const Args& args) {
   const regmap::FiniteGroup group = regmap::enumerate_group(presentation, limits);
   const regmap::MapFigures f = regmap::map_figures(group);
   regmap::check_stated_figures(presentation, f);
-  const regmap::TriangleTiling tiling = regmap::build_tiling(group);
+  const regmap::TriangleTiling tiling = regmap::build_tiling(group, limits);
   const regmap::PolygonShape shape = regmap::polygon_shape(tiling);
   const double seconds = seconds_since(start);
   const std::string title = presentation.name + " {" + std::to_string(presentation.p) + "," +

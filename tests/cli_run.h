@@ -15,10 +15,12 @@ struct CliResult {
   std::string out;  // stdout, or stdout and stderr together when asked
 };
 
-// `arguments` is appended to the CLI path as shell text (quote paths yourself).
-inline CliResult run_cli(const std::string& arguments, bool merge_stderr = false) {
-  const std::string command =
-      std::string("'") + TESSERA_CLI + "' " + arguments + (merge_stderr ? " 2>&1" : " 2>/dev/null");
+// `arguments` is appended to the CLI path as shell text (quote paths yourself); `environment`
+// ("NAME=value ...") is set for the command.
+inline CliResult run_cli(const std::string& arguments, bool merge_stderr = false,
+                         const std::string& environment = "") {
+  const std::string command = environment + (environment.empty() ? "" : " ") + "'" + TESSERA_CLI +
+                              "' " + arguments + (merge_stderr ? " 2>&1" : " 2>/dev/null");
   CliResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;

@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli_run.h"
+#include "mesh_test_util.h"
 
 namespace tessera {
 namespace {
@@ -14,9 +14,7 @@ namespace {
 using test::run_cli;
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("tessera_regmap_cli_" + name);
-  std::ofstream(path) << text;
-  return path.string();
+  return test::write_temp_file(name, test::bytes_of(text));
 }
 
 TEST(RegmapCli, InfoJsonOfTheKleinQuartic) {
@@ -56,6 +54,8 @@ TEST(RegmapCli, BadInputExitsWithTwo) {
       write_temp("infinite.txt", "Type {3,7}\n[ T^2, (R * S)^2, (R * T)^2, (S * T)^2 ]\n");
   const std::string lying = write_temp(
       "lying.txt", "Type {4,3} Order 50\n[ T^2, R^4, S^3, (R * S)^2, (R * T)^2, (S * T)^2 ]\n");
+  const std::string cube_like =
+      write_temp("cube_like.txt", "Type {4,3}\n[ T^2, R^4, S^3, (R * S)^2 ]\n");
   const struct {
     std::string args;
     const char* message;
@@ -70,12 +70,24 @@ TEST(RegmapCli, BadInputExitsWithTwo) {
       {"regmap catalog --type 3", "--type expects p,q"},
       {"regmap catalog --colour", "unknown option '--colour'"},
       {"regmap frobnicate", "unknown subcommand"},
+      {"regmap tiling R3.1 -o /dev/null --max-triangles 100", "--max-triangles"},
+      {"regmap info '" + cube_like + "' --max-file-bytes 10", "--max-file-bytes"},
   };
   for (const auto& c : cases) {
     const auto r = run_cli(c.args, true);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.out;
     EXPECT_NE(r.out.find(c.message), std::string::npos) << c.args << "\n" << r.out;
   }
+}
+
+TEST(RegmapCli, CatalogFollowsTesseraDataDir) {
+  const auto r = run_cli("regmap info R3.1", true);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  const auto moved = run_cli("regmap info R3.1", true, "TESSERA_DATA_DIR=/nonexistent");
+  EXPECT_EQ(moved.exit_code, 2) << moved.out;
+  EXPECT_NE(moved.out.find("/nonexistent/regmaps/catalog_g2-101.tsv"), std::string::npos)
+      << moved.out;
+  EXPECT_NE(moved.out.find("set TESSERA_DATA_DIR"), std::string::npos) << moved.out;
 }
 
 TEST(RegmapCli, CatalogFilters) {

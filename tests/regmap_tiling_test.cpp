@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/error.h"
 #include "regmap/catalog.h"
 #include "regmap/conder_format.h"
 #include "regmap/tiling_svg.h"
@@ -160,6 +161,19 @@ TEST(RegmapTiling, TorusMapIsAFundamentalDomainOfTranslations) {
     // z -> (a z + b) / conj(a) is a translation when a / conj(a) = 1.
     EXPECT_NEAR(std::abs(pair.pairing.a / std::conj(pair.pairing.a) - 1.0), 0.0, 1e-9);
     EXPECT_GT(std::abs(pair.pairing.b), 1.0);  // by at least one edge (3 edges here)
+  }
+}
+
+TEST(RegmapTiling, LargeGroupsHitTheTriangleLimit) {
+  const FiniteGroup group =
+      enumerate_group(presentation_of(find_map(read_catalog(kCatalogPath), "R3.1")), Limits());
+  Limits limits;
+  limits.max_tiling_triangles = 300;
+  try {
+    build_tiling(group, limits);
+    ADD_FAILURE() << "no error";
+  } catch (const LimitError& e) {
+    EXPECT_NE(std::string(e.what()).find("--max-triangles"), std::string::npos) << e.what();
   }
 }
 

@@ -8,11 +8,12 @@
 namespace tessera {
 
 struct Limits {
-  std::size_t max_vertices = 4'000'000;      // --max-vertices
-  std::size_t max_faces = 8'000'000;         // --max-faces
+  std::size_t max_vertices = 4'000'000;        // --max-vertices
+  std::size_t max_faces = 8'000'000;           // --max-faces
   std::size_t max_file_bytes = 1'500'000'000;  // --max-file-bytes
-  std::size_t max_coset_table = 4'000'000;   // --max-cosets (rows of a coset table)
-  double max_coset_seconds = 20.0;           // --max-seconds (coset enumeration)
+  std::size_t max_coset_table = 4'000'000;     // --max-cosets (rows of a coset table)
+  double max_coset_seconds = 20.0;             // --max-seconds (coset enumeration)
+  std::size_t max_tiling_triangles = 250'000;  // --max-triangles (Tri(G) of a regular map)
 };
 
 // Throws LimitError("<what> has <value>, above the limit <limit> (<flag>) ...") if value > limit.

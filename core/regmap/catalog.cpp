@@ -112,8 +112,8 @@ Catalog read_catalog(const std::string& path) {
                      " (the regular-map catalog; set TESSERA_DATA_DIR to the folder holding "
                      "regmaps/)");
   }
-  return parse_catalog(
-      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
+  return parse_catalog(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                       path);
 }
 
 CatalogEntry dual(const CatalogEntry& entry) {

@@ -15,7 +15,8 @@ namespace {
 using Coset = std::int32_t;
 constexpr Coset kUndefined = -1;
 constexpr std::size_t kInitialRows = 1024;
-constexpr std::size_t kClockInterval = 4096;  // definitions between time/progress checks
+constexpr std::size_t kClockInterval = 4096;            // definitions between time/progress checks
+constexpr std::size_t kLettersBetweenChecks = 1 << 22;  // HLT letters traced between checks
 
 std::size_t column(Letter x) {
   return static_cast<std::size_t>(x);
@@ -97,6 +98,7 @@ class Enumerator {
       for (const Word& w : conjugates_.long_relators()) {
         if (!live(scanning_)) break;
         compact_if_worthwhile();
+        count_work(w.size());
         scan_and_fill(scanning_, w);
         process_deductions();
       }
@@ -170,6 +172,15 @@ class Enumerator {
                        "relators); raise the limit with --max-seconds");
     progress_.step("coset enumeration",
                    static_cast<double>(scanning_) / static_cast<double>(rows_));
+  }
+
+  // Long relators can keep the scans busy without defining rows: the clock is also checked after
+  // every few million letters traced.
+  void count_work(std::size_t letters) {
+    letters_traced_ += letters;
+    if (letters_traced_ < kLettersBetweenChecks) return;
+    letters_traced_ = 0;
+    check_clock();
   }
 
   // Renumbers the live cosets 0, 1, ... in their order once a quarter of the rows are dead (so the
@@ -373,6 +384,7 @@ class Enumerator {
   std::vector<Coset> forward_;  // forward_[c] == c for live cosets, towards the survivor otherwise
   std::size_t rows_ = 0, capacity_ = 0, dead_ = 0;
   Coset scanning_ = 0;  // the coset whose row is being completed
+  std::size_t letters_traced_ = 0;
   std::vector<Deduction> deductions_;
   std::vector<Coset> coincidences_;
   EnumerationStats stats_;

@@ -202,7 +202,11 @@ std::size_t corner_id(std::size_t g, Corner k) {
 
 }  // namespace
 
-TriangleTiling build_tiling(const FiniteGroup& group, const Progress& progress) {
+TriangleTiling build_tiling(const FiniteGroup& group, const Limits& limits,
+                            const Progress& progress) {
+  check_limit(group.order(), limits.max_tiling_triangles,
+              "the tiling of a group of order " + std::to_string(group.order()) + " (triangles)",
+              "--max-triangles");
   return TilingBuilder(group, progress).build();
 }
 

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/limits.h"
 #include "base/progress.h"
 #include "regmap/finite_group.h"
 #include "regmap/isometry.h"
@@ -60,7 +61,10 @@ struct TriangleTiling {
   std::size_t size() const { return placement.size(); }
 };
 
-TriangleTiling build_tiling(const FiniteGroup& group, const Progress& progress = Progress());
+// Throws LimitError when |G| is above limits.max_tiling_triangles (each triangle holds about 200
+// bytes, and the picture one polygon per triangle).
+TriangleTiling build_tiling(const FiniteGroup& group, const Limits& limits = Limits(),
+                            const Progress& progress = Progress());
 
 // The polygon as a cell complex (triangles glued along their shared sides): a disk has
 // euler == 1 and one boundary cycle.
