@@ -61,12 +61,6 @@ Word power(const Word& w, int exponent) {
   return result;
 }
 
-Word concat(const Word& a, const Word& b) {
-  Word result = a;
-  result.insert(result.end(), b.begin(), b.end());
-  return result;
-}
-
 Word cyclically_reduced(const Word& w) {
   Word stack;
   for (Letter x : w) {

@@ -26,7 +26,6 @@ using Word = std::vector<Letter>;
 std::string to_string(const Word& w);
 Word inverse(const Word& w);
 Word power(const Word& w, int exponent);
-Word concat(const Word& a, const Word& b);
 // Cancels adjacent inverse pairs (x x^-1, and T T), also cyclically: the relator it returns
 // defines the same normal closure.
 Word cyclically_reduced(const Word& w);
@@ -45,15 +44,16 @@ struct Presentation {
 // every genus the census lists with room to spare, and keeps relators like S^q short.
 inline constexpr int kMaxValence = 10'000;
 
-// Every relator of Def. 9.2: R^p, S^q, T^2, (RS)^2, (RT)^2, (ST)^2, then the extra ones, cyclically
-// reduced, without empty words.
+// Every relator of Def. 9.2: R^p, S^q, (RS)^2, (RT)^2, (ST)^2, then the extra ones, cyclically
+// reduced, without empty words. T^2 reduces to the empty word: it holds by construction, since the
+// coset table's T column is its own inverse. Throws InputError for p or q outside 2..kMaxValence.
 std::vector<Word> defining_relators(const Presentation& presentation);
 
 // The dual map: the same group with the roles of R and S exchanged (faces become vertices), so p
-// and q swap and every relator has R and S swapped. The relations (RS)^2 = (SR)^2-conjugate, (RT)^2
-// and (ST)^2 map onto each other, and reflexibility (T conjugates R to R^-1 and S to S^-1) makes
-// the mirror image of the swapped triangle the same map. The name gains a prime ("R2.4" -> "R2.4'")
-// or loses it.
+// and q swap and every relator has R and S swapped. The standard relations go to standard ones
+// ((RS)^2 to (SR)^2, a conjugate of it; (RT)^2 and (ST)^2 to each other), and reflexibility (T
+// conjugates R to R^-1 and S to S^-1) makes the mirror image of the swapped triangle the same map.
+// The name gains a prime ("R2.4" -> "R2.4'") or loses it.
 Presentation dual(const Presentation& presentation);
 
 // "R2.4'" -> true. A dual name is a catalog name with one trailing prime.
