@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { externalBufferUris, extensionOf, meshFormat, pickMeshFile } from '../../web/src/worker/file-types.js';
+import { extensionOf, meshFormat, pickMeshFile } from '../../web/src/ui/file-types.js';
 
 describe('meshFormat', () => {
   it('knows the formats the core reads, in any case, from a name or a path', () => {
@@ -44,21 +44,6 @@ describe('pickMeshFile', () => {
     ];
     for (const [files, message] of cases) {
       expect(thrown(() => pickMeshFile(files))).toMatchObject({ kind: 'unsupported', message: expect.stringMatching(message) });
-    }
-  });
-});
-
-describe('externalBufferUris', () => {
-  it('lists buffers stored in other files, not embedded ones', () => {
-    const gltf = {
-      buffers: [{ uri: 'scene.bin' }, { uri: 'data:application/octet-stream;base64,AAAA' }, { byteLength: 4 }, { uri: 'more/lod1.bin' }],
-    };
-    expect(externalBufferUris(JSON.stringify(gltf))).toEqual(['scene.bin', 'more/lod1.bin']);
-  });
-
-  it('leaves documents it cannot read to the core', () => {
-    for (const text of ['', 'not json', '{"buffers": 3}', 'null', '[1,2]', '{"buffers":[null, 5]}']) {
-      expect(externalBufferUris(text), text).toEqual([]);
     }
   });
 });

@@ -1,5 +1,5 @@
 import { COMMANDS } from '../worker/protocol.js';
-import { pickMeshFile } from '../worker/file-types.js';
+import { pickMeshFile } from './file-types.js';
 import { showInfo } from './info-panel.js';
 import { downloadBytes, downloadName } from './download.js';
 

@@ -1,7 +1,6 @@
 // The compute worker: runs the wasm core off the page's thread and answers the requests of
 // protocol.js. No algorithm lives here: it calls the core and prepares data for the viewer.
 import { COMMANDS, PAGE_ERROR_KINDS, errorEvent, ownedBuffers, progressEvent, resultEvent } from './protocol.js';
-import { externalBufferUris, externalBuffersError, meshFormat } from './file-types.js';
 import { polygonEdges, vertexNormals } from './display.js';
 
 // The wasm build is a static file (web/public/wasm), not a source module: an absolute URL keeps
@@ -43,10 +42,6 @@ const handlers = {
     const module = await loadCore();
     progress(`Reading ${file.name}`, 0.1);
     const bytes = new Uint8Array(await file.arrayBuffer());
-    if (meshFormat(file.name) === 'gltf') {
-      const uris = externalBufferUris(new TextDecoder().decode(bytes));
-      if (uris.length > 0) throw externalBuffersError(file.name, uris);
-    }
     progress('Building the mesh', 0.3);
     return meshForViewer(module.loadMesh(bytes, file.name), progress);
   },

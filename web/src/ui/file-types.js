@@ -1,4 +1,4 @@
-import { PAGE_ERROR_KINDS, jobError } from './protocol.js';
+import { PAGE_ERROR_KINDS, jobError } from '../worker/protocol.js';
 
 /** The mesh formats the core reads, by file extension. */
 export const MESH_EXTENSIONS = Object.freeze(['obj', 'off', 'ply', 'stl', 'glb', 'gltf']);
@@ -41,32 +41,4 @@ export function pickMeshFile(files) {
     );
   }
   return file;
-}
-
-/**
- * The buffer URIs of a glTF JSON document that point to other files (not embedded data: URIs).
- * A single dropped .gltf cannot bring those files along. Returns [] when the text is not JSON:
- * the core's reader then says what is wrong with it.
- */
-export function externalBufferUris(gltfText) {
-  let document;
-  try {
-    document = JSON.parse(gltfText);
-  } catch {
-    return [];
-  }
-  const buffers = Array.isArray(document?.buffers) ? document.buffers : [];
-  return buffers
-    .map((buffer) => buffer?.uri)
-    .filter((uri) => typeof uri === 'string' && !uri.startsWith('data:'));
-}
-
-/** The error for a .gltf file whose buffers live in other files. */
-export function externalBuffersError(fileName, uris) {
-  return jobError(
-    PAGE_ERROR_KINDS.unsupported,
-    `"${fileName}" keeps its geometry in separate files (${uris.join(', ')}), which a single ` +
-      'opened file cannot bring along. Open the model as .glb (binary glTF, one file), or as a ' +
-      '.gltf with embedded buffers.',
-  );
 }
