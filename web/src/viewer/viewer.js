@@ -107,10 +107,13 @@ export class Viewer {
     this.edges = null;
   }
 
+  // Puts the camera where the bounding sphere just fits the narrower of the two view angles.
   frame({ center, radius }) {
-    const distance = (radius || 1) / Math.sin((this.camera.fov * Math.PI) / 360);
+    const halfHeight = (this.camera.fov * Math.PI) / 360;
+    const halfWidth = Math.atan(Math.tan(halfHeight) * this.camera.aspect);
+    const distance = (radius || 1) / Math.sin(Math.min(halfHeight, halfWidth));
     const direction = new Vector3(0.55, 0.45, 1).normalize();
-    this.camera.position.copy(center).addScaledVector(direction, distance * 1.05);
+    this.camera.position.copy(center).addScaledVector(direction, distance);
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;
     this.camera.updateProjectionMatrix();
