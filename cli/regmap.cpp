@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "base/error.h"
 #include "base/limits.h"
@@ -67,9 +68,8 @@ constexpr const char* kTilingHelp =
     "\n"
     "Grows the map's fundamental polygon (thesis Sec. 9.3, Fig. 9.8): one triangle (pi/p, pi/q,\n"
     "pi/2) per element of its group, face by face from the centre of the Poincare disk; the\n"
-    "polygon's boundary edges are paired by the group. Writes an SVG with the triangles coloured "
-    "by\n"
-    "face and each boundary pair numbered; prints the polygon's figures.\n"
+    "polygon's boundary edges are paired by the group. Writes an SVG with the triangles\n"
+    "coloured by face and each boundary pair numbered; prints the polygon's figures.\n"
     "Torus maps are drawn in the plane, spherical (Platonic) maps on two hemispheres.\n"
     "  -o FILE          the SVG to write (required)\n"
     "  --json           print {name, geometry, triangles, boundary_pairs, polygon_vertices,\n"
@@ -123,15 +123,14 @@ regmap::Presentation resolve_map(const std::string& map, const Limits& limits) {
   return regmap::presentation_of(regmap::find_map(regmap::read_catalog(catalog_path()), map));
 }
 
-ParsedArgs parse_one_map(const Args& args, const std::string& command) {
-  ParsedArgs parsed = parse_args(
-      args, {"--max-cosets", "--max-seconds", "--max-file-bytes", "--max-triangles", "-o"},
-      {"--json"}, command);
+// The options every command on one map takes, plus `extra` ones with values.
+ParsedArgs parse_one_map(const Args& args, const std::string& command,
+                         std::set<std::string> extra = {}) {
+  extra.insert({"--max-cosets", "--max-seconds", "--max-file-bytes"});
+  ParsedArgs parsed = parse_args(args, extra, {"--json"}, command);
   if (parsed.positional.size() != 1)
-    throw UsageError("'tessera " + command +
-                     "' takes one map (a catalog name or a file); run "
-                     "'tessera " +
-                     command + " --help'");
+    throw UsageError("'tessera " + command + "' takes one map (a catalog name or a file); " +
+                     "run 'tessera " + command + " --help'");
   return parsed;
 }
 
@@ -141,7 +140,6 @@ int info(const Args& args) {
     return 0;
   }
   const ParsedArgs parsed = parse_one_map(args, "regmap info");
-  if (parsed.has("-o")) throw UsageError("'tessera regmap info' writes no file; drop -o");
   const Limits limits = limits_from(parsed);
   const regmap::Presentation presentation = resolve_map(parsed.positional[0], limits);
   const auto start = std::chrono::steady_clock::now();
@@ -246,7 +244,7 @@ int tiling(const Args& args) {
     std::fputs(kTilingHelp, stdout);
     return 0;
   }
-  const ParsedArgs parsed = parse_one_map(args, "regmap tiling");
+  const ParsedArgs parsed = parse_one_map(args, "regmap tiling", {"-o", "--max-triangles"});
   const std::string output = parsed.value("-o");
   if (output.empty())
     throw UsageError(
