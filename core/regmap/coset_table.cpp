@@ -99,7 +99,7 @@ class Enumerator {
         if (!live(scanning_)) break;
         compact_if_worthwhile();
         count_work(w.size());
-        scan_and_fill(scanning_, w);
+        trace<true>(scanning_, w.data(), w.size());
         process_deductions();
       }
       for (std::size_t x = 0; x < kLetterCount; ++x) {
@@ -221,51 +221,19 @@ class Enumerator {
 
   void scan_all(Coset c, const std::vector<Conjugates::Span>& spans) {
     for (const Conjugates::Span& span : spans) {
-      scan(c, conjugates_.letters(span), span.length);
+      trace<false>(c, conjugates_.letters(span), span.length);
       if (!live(c)) return;
     }
   }
 
-  // Traces the relator w from c forwards and backwards without defining cosets: a complete trace
-  // that does not close is a coincidence; a gap of one letter is a deduction.
-  void scan(Coset c, const Letter* w, std::size_t n) {
-    Coset f = c;
-    std::size_t i = 0;
-    while (i < n) {
-      const Coset next = entry(f, column(w[i]));
-      if (next == kUndefined) break;
-      f = next;
-      ++i;
-    }
-    if (i == n) {
-      if (f != c) coincidence(f, c);
-      return;
-    }
-    Coset b = c;
-    std::size_t j = n;  // letters w[j..n) traced backwards from c
-    while (j > i) {
-      const Coset prev = entry(b, inv(column(w[j - 1])));
-      if (prev == kUndefined) break;
-      b = prev;
-      --j;
-    }
-    if (j == i) {
-      coincidence(f, b);
-    } else if (j == i + 1) {
-      const std::size_t x = column(w[i]);
-      entry(f, x) = b;
-      entry(b, inv(x)) = f;
-      deductions_.push_back({f, x});
-    }
-  }
-
-  // HLT for the long relators: traces w from c in both directions and defines cosets in the gap
-  // until the cycle closes.
-  void scan_and_fill(Coset c, const Word& word) {
-    const Letter* w = word.data();
-    const std::size_t n = word.size();
+  // Traces the relator w (n letters) from c forwards and backwards. A complete trace that does not
+  // close is a coincidence; a gap of one letter is a deduction. A longer gap is left alone (Felsch)
+  // or, when `kFill`, closed with new cosets one at a time (HLT). A template parameter, so that the
+  // Felsch scan, the hot loop of the enumeration, compiles without the filling branch.
+  template <bool kFill>
+  void trace(Coset c, const Letter* w, std::size_t n) {
     Coset f = c, b = c;
-    std::size_t i = 0, j = n;
+    std::size_t i = 0, j = n;  // w[0..i) traced forwards to f, w[j..n) backwards to b
     for (;;) {
       while (i < j) {
         const Coset next = entry(f, column(w[i]));
@@ -294,6 +262,7 @@ class Enumerator {
         deductions_.push_back({f, x});
         return;
       }
+      if (!kFill) return;
       define(f, x);
     }
   }
