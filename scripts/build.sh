@@ -19,9 +19,19 @@ build_wasm() {
   cmake --build build/wasm -j"$jobs"
 }
 
+# AddressSanitizer + UndefinedBehaviorSanitizer build with clang-14: the native suite and the
+# libFuzzer targets (scripts/fuzz.sh) share its instrumented core.
+build_sanitize() {
+  [ -f build/sanitize/CMakeCache.txt ] ||
+    CC=clang-14 CXX=clang++-14 cmake -S . -B build/sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DTESSERA_SANITIZE=ON >/dev/null
+  cmake --build build/sanitize -j"$jobs"
+}
+
 case "${1:-all}" in
   native) build_native ;;
   wasm) build_wasm ;;
+  sanitize) build_sanitize ;;
   all) build_native && build_wasm ;;
-  *) echo "usage: scripts/build.sh [native|wasm|all]" >&2; exit 2 ;;
+  *) echo "usage: scripts/build.sh [native|wasm|sanitize|all]" >&2; exit 2 ;;
 esac

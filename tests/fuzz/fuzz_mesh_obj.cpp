@@ -1,0 +1,5 @@
+// Fuzzes reading and validating a .obj file (readers.h, validate.h).
+#include "fuzz_target.h"
+#include "mesh/load.h"
+
+TESSERA_FUZZ_TARGET(tessera::load_mesh(bytes, "fuzz.obj", tessera::fuzz::fuzz_limits()))
