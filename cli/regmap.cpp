@@ -14,6 +14,7 @@
 #include "regmap/catalog.h"
 #include "regmap/conder_format.h"
 #include "regmap/finite_group.h"
+#include "regmap/map_json.h"
 #include "regmap/tiling_svg.h"
 #include "regmap/triangle_tiling.h"
 #include "usage.h"
@@ -149,13 +150,7 @@ int info(const Args& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   regmap::check_stated_figures(presentation, f);
   if (parsed.has("--json")) {
-    Json out = {
-        {"name", presentation.name},  {"p", presentation.p},
-        {"q", presentation.q},        {"order", f.order},
-        {"vertices", f.vertices},     {"edges", f.edges},
-        {"faces", f.faces},           {"genus", f.orientable ? Json(f.genus) : Json(nullptr)},
-        {"orientable", f.orientable}, {"euler", f.euler},
-        {"petrie", f.petrie},         {"seconds", seconds}};
+    const Json out = regmap::map_info_json(presentation, f, seconds);
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
   }
@@ -179,18 +174,6 @@ std::pair<int, int> parse_type_option(const std::string& text) {
   if (std::sscanf(text.c_str(), "%d,%d%c", &p, &q, &tail) != 2 || p < 2 || q < 2)
     throw UsageError("--type expects p,q (e.g. --type 3,7), got '" + text + "'");
   return {p, q};
-}
-
-Json catalog_row_json(const regmap::CatalogEntry& e) {
-  return {{"name", e.name},
-          {"genus", e.genus},
-          {"p", e.p},
-          {"q", e.q},
-          {"petrie", e.petrie},
-          {"order", e.order},
-          {"vertices", e.vertices},
-          {"edges", e.edges},
-          {"faces", e.faces}};
 }
 
 int catalog(const Args& args) {
@@ -220,7 +203,7 @@ int catalog(const Args& args) {
   }
   if (parsed.has("--json")) {
     Json out = Json::array();
-    for (const auto& e : rows) out.push_back(catalog_row_json(e));
+    for (const auto& e : rows) out.push_back(regmap::catalog_row_json(e));
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
   }

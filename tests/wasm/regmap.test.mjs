@@ -1,0 +1,53 @@
+// Regular maps in the wasm module: the shipped catalog loads, figures match the native rows, and
+// a presentation of an infinite group ends with a clear limit error.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { loadTessera } from './tessera_module.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const catalogText = fs.readFileSync(path.resolve(here, '../../data/regmaps/catalog_g2-101.tsv'), 'utf8');
+const tessera = await loadTessera();
+const rows = tessera.regmapLoadCatalog(catalogText);
+
+test('the catalog loads with all 3378 maps', () => {
+  assert.equal(rows.length, 3378);
+  const klein = rows.find((r) => r.name === 'R3.1');
+  assert.deepEqual([klein.p, klein.q, klein.order, klein.vertices, klein.edges, klein.faces], [3, 7, 336, 24, 84, 56]);
+});
+
+test('figures of catalog maps and their duals', () => {
+  const klein = tessera.regmapInfo('R3.1');
+  assert.deepEqual([klein.order, klein.vertices, klein.edges, klein.faces, klein.genus, klein.petrie], [336, 24, 84, 56, 3, 8]);
+  const r24 = tessera.regmapInfo('R2.4');
+  assert.deepEqual([r24.order, r24.vertices, r24.edges, r24.faces, r24.genus], [20, 1, 5, 2, 2]);
+  const dual = tessera.regmapInfo("R2.4'");
+  assert.deepEqual([dual.p, dual.q, dual.vertices, dual.faces], [10, 5, 2, 1]);
+  for (const row of rows.filter((r) => r.genus <= 4)) {
+    const info = tessera.regmapInfo(row.name);
+    assert.deepEqual([info.order, info.vertices, info.edges, info.faces, info.genus], [row.order, row.vertices, row.edges, row.faces, row.genus], row.name);
+  }
+});
+
+test('a presentation typed by hand: the cube, and an infinite group', () => {
+  const cube = tessera.regmapInfo('Cube : Type {4,3} Order 48\n[ T^2, R^4, S^3, (R * S)^2, (R * T)^2, (S * T)^2 ]');
+  assert.deepEqual([cube.order, cube.vertices, cube.edges, cube.faces, cube.euler], [48, 8, 12, 6, 2]);
+  const start = Date.now();
+  assert.throws(() => tessera.regmapInfo('Hyperbolic : Type {3,7}\n[ T^2, R^3, S^7, (R * S)^2, (R * T)^2, (S * T)^2 ]'),
+    (e) => e.kind === 'limit' && /--max-cosets|--max-seconds|limit/.test(e.message));
+  assert.ok(Date.now() - start < 15000);
+  assert.throws(() => tessera.regmapInfo('X : Type {3,7}\n[ T^2, R^3, Q^7 ]'), (e) => e.kind === 'parse');
+  assert.throws(() => tessera.regmapInfo('R999.1'), (e) => e.kind === 'input');
+});
+
+test('the tiling of R2.4 is one polygon with paired sides, drawn as SVG', () => {
+  const { info, svg, polygon } = tessera.regmapTiling('R2.4');
+  assert.equal(info.order, 20);
+  assert.equal(polygon.triangles, 20);
+  assert.equal(polygon.euler, 1);
+  assert.equal(polygon.boundaryCycles, 1);
+  assert.ok(polygon.boundaryPairs > 0);
+  assert.match(svg, /^<\?xml|^<svg/);
+});
