@@ -4,7 +4,7 @@
 
 namespace tessera {
 
-void check_limit(std::size_t value, std::size_t limit, const std::string& what,
+void check_limit(std::uint64_t value, std::uint64_t limit, const std::string& what,
                  const std::string& flag) {
   if (value <= limit) return;
   throw LimitError(what + " has " + std::to_string(value) + ", above the limit of " +

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace tessera {
@@ -17,7 +18,8 @@ struct Limits {
 };
 
 // Throws LimitError("<what> has <value>, above the limit <limit> (<flag>) ...") if value > limit.
-void check_limit(std::size_t value, std::size_t limit, const std::string& what,
+// 64-bit on every target, so that a count announced by a file is not truncated in wasm32 first.
+void check_limit(std::uint64_t value, std::uint64_t limit, const std::string& what,
                  const std::string& flag);
 
 }  // namespace tessera

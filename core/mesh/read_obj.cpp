@@ -30,11 +30,12 @@ Index parse_corner(std::string_view token, std::size_t vertices_so_far, const Te
   if (!index) lines.fail(quoted(token) + " is not a face corner (v, v/vt, v//vn or v/vt/vn)");
   if (*index == 0) lines.fail("vertex index 0 in a face; OBJ indices start at 1");
   if (*index < 0) {
-    if (static_cast<std::uint64_t>(-*index) > vertices_so_far)
+    const auto available = static_cast<std::int64_t>(vertices_so_far);
+    if (*index < -available)
       lines.fail("relative vertex index " + std::to_string(*index) +
                  " points before the first vertex (only " + std::to_string(vertices_so_far) +
                  " vertices precede this face)");
-    return static_cast<Index>(vertices_so_far - static_cast<std::uint64_t>(-*index));
+    return static_cast<Index>(available + *index);
   }
   if (*index >= static_cast<std::int64_t>(kNoIndex))
     lines.fail("vertex index " + std::to_string(*index) + " is beyond any mesh Tessera can hold");
