@@ -68,6 +68,33 @@ test('a broken OBJ gets a clear error and the page keeps working', async ({ page
   assert.ok(await message(page).isHidden(), 'the old error stays after a successful job');
 });
 
+test('malformed files of every kind get a specific error and the page stays usable', async ({ page, url }) => {
+  await openPage(page, url);
+  const truncatedStl = Buffer.alloc(84 + 50);
+  truncatedStl.writeUInt32LE(1000, 80); // announces 1000 triangles, holds 1
+  const hugePly = ['ply', 'format ascii 1.0', 'element vertex 3', 'property float x', 'property float y', 'property float z',
+    'element face 4000000000', 'property list uchar int vertex_indices', 'end_header', '0 0 0', '1 0 0', '0 1 0', '3 0 1 2', ''].join('\n');
+  const cases = [
+    [{ name: 'empty.obj', text: '' }, /could not be read/],
+    [{ name: 'truncated.stl', bytes: truncatedStl }, /could not be read/],
+    [{ name: 'nan.obj', text: 'v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n' }, /unusable geometry/],
+    [{ name: 'fin.obj', text: 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n' }, /connectivity/],
+    [{ name: 'huge.ply', text: hugePly }, /beyond a limit/],
+  ];
+  for (const [file, title] of cases) {
+    await pickFiles(page, [file]);
+    const alert = page.getByRole('alert');
+    await alert.waitFor();
+    const text = await alert.textContent();
+    assert.match(text, title, file.name);
+    assert.ok(text.includes(file.name), `the error does not say which file: ${text}`);
+    await page.getByRole('button', { name: 'Dismiss' }).click();
+  }
+  assert.match(await meshName(page), /genus2/, 'the mesh on screen was lost');
+  await chooseSample(page, 'sphere');
+  assert.equal(await figure(page, 'euler_characteristic'), '2');
+});
+
 test('files the page cannot take are explained in plain words', async ({ page, url }) => {
   await openPage(page, url);
   const gltf = { asset: { version: '2.0' }, buffers: [{ uri: 'scene.bin', byteLength: 96 }] };
