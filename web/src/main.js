@@ -9,8 +9,7 @@ import { createViewControls } from './ui/view-controls.js';
 import { createTabs } from './ui/tabs.js';
 import { formatHash, parseHash } from './ui/hash.js';
 import { QuadLayoutMode } from './ui/quad-layout-mode.js';
-
-const MODES = [{ id: 'quad', label: 'Quad layout' }];
+import { MODES } from './ui/modes.js';
 
 const byId = (id) => document.getElementById(id);
 const client = new WorkerClient(

@@ -2,7 +2,8 @@
 // The hash comes from anywhere (a pasted link): it is parsed defensively, and every key that is
 // unknown, repeated or malformed is dropped with a note instead of reaching the page.
 
-export const MODES = Object.freeze(['quad']);
+import { MODES } from './modes.js';
+
 const MAX_HASH_LENGTH = 2000;
 
 const oneOf = (values) => (text) => (values.includes(text) ? text : undefined);
@@ -11,7 +12,7 @@ const flag = (text) => ({ 1: true, 0: false })[text];
 
 /** Each shareable key, with its parser (text -> value, or undefined when malformed). */
 const FIELDS = Object.freeze({
-  mode: oneOf(MODES),
+  mode: oneOf(MODES.map(({ id }) => id)),
   sample: name,
   shading: oneOf(['flat', 'smooth']),
   wireframe: flag,
