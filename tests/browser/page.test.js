@@ -152,3 +152,49 @@ test('a link restores the sample and the view; a bad link falls back to the defa
   const notice = page.getByRole('status').filter({ hasText: 'Parts of the link were ignored.' });
   assert.match(await notice.textContent(), /zoom/);
 });
+
+test('a core that cannot be loaded is reported, and the page recovers once it can be', async ({ page, url }) => {
+  await page.route('**/wasm/tessera.mjs', (route) => route.abort());
+  await page.goto(url);
+  const alert = page.getByRole('alert');
+  await alert.waitFor();
+  assert.match(await alert.textContent(), /geometry core .* could not be started/);
+  await page.unroute('**/wasm/tessera.mjs');
+  await pickFiles(page, [{ name: 'cube.obj', text: cubeObj() }]);
+  await page.locator('[data-role=mesh-name]').filter({ hasText: 'cube' }).waitFor();
+  assert.equal(await figure(page, 'faces'), '6');
+});
+
+test('a trap inside the core is reported and the next job gets a fresh core', async ({ page, url }) => {
+  // The real module, with one extra sample whose call aborts the instance as a failing wasm module
+  // does: it throws a RuntimeError, and every later call on that instance throws too.
+  const trapping = `
+    const real = await import(new URL('tessera.mjs?real', import.meta.url).href);
+    export default async function createTessera(options) {
+      const module = await real.default(options);
+      let aborted = false;
+      const call = (fn) => (...args) => {
+        if (aborted) throw new WebAssembly.RuntimeError('program has already aborted');
+        return fn(...args);
+      };
+      return {
+        sampleNames: call(() => [...module.sampleNames(), 'trap']),
+        sampleMesh: call((name) => {
+          if (name !== 'trap') return module.sampleMesh(name);
+          aborted = true;
+          throw new WebAssembly.RuntimeError('unreachable executed');
+        }),
+        loadMesh: call((bytes, fileName) => module.loadMesh(bytes, fileName)),
+        exportGlb: call((payload) => module.exportGlb(payload)),
+      };
+    }`;
+  await page.route('**/wasm/tessera.mjs', (route) => route.fulfill({ contentType: 'text/javascript', body: trapping }));
+  await openPage(page, url);
+  await page.locator('[data-role=samples]').selectOption('trap');
+  const alert = page.getByRole('alert');
+  await alert.waitFor();
+  assert.match(await alert.textContent(), /The computation stopped.*unreachable executed/s);
+  assert.match(await meshName(page), /genus2/, 'the mesh on screen was lost');
+  await chooseSample(page, 'torus');
+  assert.equal(await figure(page, 'genus'), '1');
+});

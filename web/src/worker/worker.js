@@ -77,7 +77,7 @@ function describeFailure(error) {
   if (error instanceof WebAssembly.RuntimeError) {
     return {
       kind: PAGE_ERROR_KINDS.crash,
-      message: `The geometry core stopped (${detail}). It has been restarted: try again.`,
+      message: `The geometry core stopped (${detail}). A fresh one starts with the next job: try again.`,
     };
   }
   return { kind: 'internal', message: `Internal error: ${detail}` };
