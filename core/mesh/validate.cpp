@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <unordered_map>
 
 #include "base/error.h"
 #include "mesh/connectivity.h"
 #include "mesh/describe.h"
 #include "mesh/edge_table.h"
-#include "mesh/exact_welder.h"
 #include "mesh/geometry.h"
 #include "mesh/topology.h"
+#include "mesh/weld.h"
 
 namespace tessera {
 namespace {
@@ -57,56 +56,8 @@ void check_finite(const Mesh& mesh) {
                           "program that wrote the mesh");
 }
 
-// Maps every vertex to the first earlier vertex within `tolerance` (a uniform grid of that cell
-// size finds candidates in the 27 surrounding cells), or to itself.
-std::vector<Index> weld_map(const Mesh& mesh, double tolerance) {
-  std::vector<Index> target(mesh.vertex_count());
-  if (tolerance <= 0) {
-    Mesh unique;
-    ExactWelder welder(unique);
-    std::vector<Index> first;  // unique vertex -> its first occurrence
-    for (Index v = 0; v < mesh.vertex_count(); ++v) {
-      const Index u = welder.vertex(mesh.positions[v]);
-      if (u == first.size()) first.push_back(v);
-      target[v] = first[u];
-    }
-    return target;
-  }
-  const Eigen::Vector3d origin = bounding_box(mesh).min;
-  auto cell_of = [&](const Eigen::Vector3d& p) {
-    const Eigen::Vector3d c = ((p - origin) / tolerance).array().floor();
-    return Eigen::Vector3i(static_cast<int>(c.x()), static_cast<int>(c.y()),
-                           static_cast<int>(c.z()));
-  };
-  auto key = [](const Eigen::Vector3i& c) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.x())) << 42) ^
-           (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.y())) << 21) ^
-           static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.z()));
-  };
-  std::unordered_multimap<std::uint64_t, Index> grid;
-  grid.reserve(mesh.vertex_count());
-  const double squared = tolerance * tolerance;
-  for (Index v = 0; v < mesh.vertex_count(); ++v) {
-    const Eigen::Vector3d& p = mesh.positions[v];
-    const Eigen::Vector3i cell = cell_of(p);
-    target[v] = v;
-    for (int dx = -1; dx <= 1 && target[v] == v; ++dx)
-      for (int dy = -1; dy <= 1 && target[v] == v; ++dy)
-        for (int dz = -1; dz <= 1 && target[v] == v; ++dz) {
-          const auto [begin, end] = grid.equal_range(key(cell + Eigen::Vector3i(dx, dy, dz)));
-          for (auto it = begin; it != end; ++it)
-            if ((mesh.positions[it->second] - p).squaredNorm() <= squared) {
-              target[v] = it->second;
-              break;
-            }
-        }
-    if (target[v] == v) grid.emplace(key(cell), v);
-  }
-  return target;
-}
-
 std::size_t weld_vertices(Mesh& mesh, double tolerance) {
-  const std::vector<Index> target = weld_map(mesh, tolerance);
+  const std::vector<Index> target = weld_targets(mesh.positions, tolerance);
   std::size_t welded = 0;
   for (Index v = 0; v < target.size(); ++v) welded += target[v] != v;
   if (welded > 0)
@@ -114,9 +65,25 @@ std::size_t weld_vertices(Mesh& mesh, double tolerance) {
   return welded;
 }
 
+bool has_repeated_vertex(std::span<const Index> face) {
+  if (face.size() > 8) {  // large polygons: sorting, not comparing all pairs
+    std::vector<Index> sorted(face.begin(), face.end());
+    std::sort(sorted.begin(), sorted.end());
+    return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+  }
+  for (std::size_t i = 0; i < face.size(); ++i)
+    for (std::size_t j = i + 1; j < face.size(); ++j)
+      if (face[i] == face[j]) return true;
+  return false;
+}
+
 // Collapses repeated consecutive corners; drops faces left with fewer than three corners or with a
 // vertex repeated elsewhere (a pinched polygon has no sensible surface).
 void repair_faces(Mesh& mesh, ValidationReport& report) {
+  bool clean = true;
+  for (std::size_t f = 0; f < mesh.face_count() && clean; ++f)
+    clean = !has_repeated_vertex(mesh.face(f));
+  if (clean) return;  // the common case: nothing to copy
   Mesh repaired;
   repaired.positions = std::move(mesh.positions);
   std::vector<Index> kept_faces;
@@ -126,9 +93,7 @@ void repair_faces(Mesh& mesh, ValidationReport& report) {
     for (Index v : mesh.face(f))
       if (corners.empty() || corners.back() != v) corners.push_back(v);
     while (corners.size() > 1 && corners.back() == corners.front()) corners.pop_back();
-    std::vector<Index> sorted = corners;
-    std::sort(sorted.begin(), sorted.end());
-    if (corners.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+    if (corners.size() < 3 || has_repeated_vertex(corners)) {
       ++report.dropped_faces;
       continue;
     }
