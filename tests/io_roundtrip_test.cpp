@@ -223,6 +223,16 @@ TEST(ReadGltf, EmbeddedBufferWithNodeTransforms) {
             (std::vector<Index>{0, 2, 1}));
 }
 
+TEST(ReadGltf, ExternalBufferBesideTheFileWhenReadFromAPath) {
+  test::write_temp_file("triangle.bin", test::triangle_buffer());
+  const std::string bin_name = test::temp_path("triangle.bin").substr(::testing::TempDir().size());
+  const std::string path = test::write_temp_file(
+      "t.gltf", bytes_of(test::triangle_gltf_json(R"(,"uri":")" + bin_name + "\"")));
+  const Mesh mesh = read_mesh_file(path, kLimits);
+  EXPECT_EQ(mesh.face_count(), 1u);
+  EXPECT_EQ(mesh.positions[2], Eigen::Vector3d(0, 1, 0));
+}
+
 TEST(ReadGltf, TriangleStripsAndNonIndexedPrimitives) {
   std::vector<std::uint8_t> bin;
   for (float x : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 1.f, 1.f, 0.f})
