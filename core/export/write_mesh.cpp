@@ -1,31 +1,17 @@
 #include "export/write_mesh.h"
 
-#include <algorithm>
-#include <cctype>
 #include <fstream>
 
 #include "base/error.h"
+#include "base/file_name.h"
 #include "export/glb.h"
 #include "export/writers.h"
 
 namespace tessera {
-namespace {
-
-std::string lower_extension(const std::string& file_name) {
-  const std::size_t slash = file_name.find_last_of("/\\");
-  const std::size_t dot = file_name.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string extension = file_name.substr(dot + 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
-
-}  // namespace
 
 std::vector<std::uint8_t> encode_mesh(const Mesh& mesh, const std::string& file_name,
                                       const MeshWriteOptions& options) {
-  const std::string extension = lower_extension(file_name);
+  const std::string extension = lowercase_extension(file_name);
   if (extension == "obj") return write_obj(mesh);
   if (extension == "off") return write_off(mesh);
   if (extension == "ply") return write_ply(mesh, options.ply_binary);

@@ -1,26 +1,16 @@
 // The format dispatch: extension first, content second.
 #include <algorithm>
-#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <string_view>
 
 #include "base/error.h"
+#include "base/file_name.h"
 #include "mesh/readers.h"
 #include "mesh/text_scan.h"
 
 namespace tessera {
 namespace {
-
-std::string lower_extension(const std::string& file_name) {
-  const std::size_t slash = file_name.find_last_of("/\\");
-  const std::size_t dot = file_name.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string extension = file_name.substr(dot + 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
 
 bool starts_with(Bytes bytes, std::string_view prefix) {
   return bytes.size() >= prefix.size() &&
@@ -63,7 +53,7 @@ std::optional<MeshFormat> sniff(Bytes bytes) {
 }  // namespace
 
 MeshFormat detect_mesh_format(Bytes bytes, const std::string& file_name) {
-  const std::string extension = lower_extension(file_name);
+  const std::string extension = lowercase_extension(file_name);
   if (extension == "obj") return MeshFormat::obj;
   if (extension == "off") return MeshFormat::off;
   if (extension == "ply") return MeshFormat::ply;
