@@ -129,6 +129,15 @@ TEST(Validate, RefusesNonManifoldVertexNamingIt) {
       "vertex 0");
 }
 
+TEST(Validate, SaysWhenWeldingCausedATopologyError) {
+  // Two triangles whose tips nearly touch: welded, they pinch at one vertex.
+  Mesh mesh =
+      triangle_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1e-9, 0, 0}, {-1, 0, 0}, {-1, -1, 0}},
+                    {{0, 1, 2}, {3, 4, 5}});
+  expect_refused<TopologyError>(mesh, "after welding 1 near-duplicate vertices");
+  EXPECT_EQ(validate_mesh(mesh, {.weld_tolerance = -1}).components, 2u);
+}
+
 TEST(Validate, ReorientsInconsistentFacesAndReportsThem) {
   Mesh mesh = icosphere(2);
   const Mesh original = mesh;

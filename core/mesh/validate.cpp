@@ -234,13 +234,22 @@ ValidationReport validate_mesh(Mesh& mesh, const ValidationOptions& options) {
   report.zero_area_faces =
       count_zero_area_faces(mesh, options.zero_area_tolerance, first_zero_area);
 
-  const std::vector<Index> corner_face = corner_faces(mesh);
-  const EdgeTable table = build_edge_table(mesh);
-  check_manifold_edges(mesh, table, corner_face);
-  report.flipped_faces = orient_faces(mesh, table, corner_face);
-
-  // Non-manifold vertices are the last thing to find; build_connectivity() names them.
-  const Connectivity connectivity = build_connectivity(mesh);
+  Connectivity connectivity;
+  try {
+    const std::vector<Index> corner_face = corner_faces(mesh);
+    const EdgeTable table = build_edge_table(mesh);
+    check_manifold_edges(mesh, table, corner_face);
+    report.flipped_faces = orient_faces(mesh, table, corner_face);
+    // Non-manifold vertices are the last thing to find; build_connectivity() names them.
+    connectivity = build_connectivity(mesh);
+  } catch (const TopologyError& e) {
+    // Welding joins what was apart; the user should know it may be the cause.
+    if (report.welded_vertices == 0) throw;
+    throw TopologyError(std::string(e.what()) + " (this is after welding " +
+                        std::to_string(report.welded_vertices) +
+                        " near-duplicate vertices; welding can be turned off with a negative "
+                        "weld tolerance, --weld-tolerance -1)");
+  }
   report.components = connected_components(mesh, connectivity).count;
   add_warnings(mesh, options, first_zero_area, report);
   return report;
