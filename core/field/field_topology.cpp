@@ -1,0 +1,91 @@
+#include "field/field_topology.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace tessera {
+namespace {
+
+constexpr double kQuarter = std::numbers::pi / 2;
+
+// The angle reduced modulo a quarter turn to [-pi/4, pi/4].
+double reduce_quarter(double a) {
+  return std::remainder(a, kQuarter);
+}
+
+// Interior angle of the triangle at the start of corner halfedge h.
+double corner_angle(const Mesh& mesh, const Connectivity& c, Index h) {
+  const Eigen::Vector3d a = halfedge_vector(mesh, c, h);
+  const Eigen::Vector3d b = -halfedge_vector(mesh, c, c.prev[h]);
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+// The quarter turn (in [-pi/4, pi/4]) that aligns the field of the face of corner halfedge h with
+// h's direction. Boundary edges use it where interior edges use the turn delta: the boundary
+// index reads the field relative to the boundary (cross_field.h).
+double boundary_alignment(const Mesh& mesh, const Connectivity& c, const FaceFrames& frames,
+                          const std::vector<double>& angle, Index h) {
+  const Index f = c.face[h];
+  return reduce_quarter(angle[f] - frames.angle(f, halfedge_vector(mesh, c, h)));
+}
+
+}  // namespace
+
+Matching principal_matching(const Connectivity& c, const std::vector<double>& angle,
+                            const std::vector<double>& kappa) {
+  Matching m;
+  m.period_jump.assign(c.halfedge_count(), 0);
+  m.turn.assign(c.halfedge_count(), 0.0);
+  for (Index e = 0; e < c.edge_count(); ++e) {
+    if (c.is_boundary_edge(e)) continue;
+    const Index h = c.edge_halfedge[e];
+    const Index t = c.twin[h];
+    // theta_j = theta_i + kappa_ij - p_ij * pi/2 + delta_ij (cross_field.h).
+    const double mismatch = angle[c.face[h]] + kappa[h] - angle[c.face[t]];
+    const long p = std::lround(mismatch / kQuarter);
+    const int jump = static_cast<int>(((p % 4) + 4) % 4);
+    m.period_jump[h] = static_cast<std::uint8_t>(jump);
+    m.period_jump[t] = static_cast<std::uint8_t>((4 - jump) % 4);
+    m.turn[h] = p * kQuarter - mismatch;
+    m.turn[t] = -m.turn[h];
+  }
+  return m;
+}
+
+std::vector<int> vertex_indices(const Mesh& mesh, const Connectivity& c, const FaceFrames& frames,
+                                const std::vector<double>& angle, const std::vector<double>& turn) {
+  std::vector<int> index(c.vertex_count(), 0);
+  for (Index v = 0; v < c.vertex_count(); ++v) {
+    const std::vector<Index> out = outgoing_halfedges(c, v);
+    if (out.empty()) continue;
+    // Counterclockwise, the face of outgoing halfedge h is followed by the face of
+    // twin(prev(h)), across halfedge prev(h).
+    double curvature = c.is_boundary_vertex(v) ? std::numbers::pi : 2 * std::numbers::pi;
+    double turning = 0;
+    for (Index h : out) {
+      if (c.is_boundary_halfedge(h)) continue;
+      curvature -= corner_angle(mesh, c, h);
+      const Index across = c.prev[h];
+      if (c.is_boundary_halfedge(c.twin[h]))
+        turning += boundary_alignment(mesh, c, frames, angle, h);
+      if (c.is_boundary_halfedge(c.twin[across]))
+        turning -= boundary_alignment(mesh, c, frames, angle, across);
+      else
+        turning += turn[across];
+    }
+    index[v] = static_cast<int>(std::lround(4 * (curvature + turning) / (2 * std::numbers::pi)));
+  }
+  return index;
+}
+
+std::vector<Singularity> singularities(const Connectivity& c, const std::vector<int>& index) {
+  std::vector<Singularity> result;
+  for (Index v = 0; v < index.size(); ++v) {
+    if (index[v] == 0) continue;
+    const int regular_valence = c.is_boundary_vertex(v) ? 2 : 4;
+    result.push_back({v, index[v] / 4.0, regular_valence - index[v]});
+  }
+  return result;
+}
+
+}  // namespace tessera

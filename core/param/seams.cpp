@@ -1,0 +1,87 @@
+#include "param/seams.h"
+
+#include <array>
+
+#include "mesh/topology.h"
+#include "param/linear_elimination.h"
+#include "param/poisson.h"
+
+namespace tessera {
+namespace {
+
+// J^r as an integer matrix: column k is J^r of the k-th unit vector.
+std::array<std::array<double, 2>, 2> quarter_turn_matrix(int r) {
+  const Eigen::Vector2d x = quarter_turns({1, 0}, r);
+  const Eigen::Vector2d y = quarter_turns({0, 1}, r);
+  return {{{x.x(), y.x()}, {x.y(), y.y()}}};
+}
+
+// Rows of x(to) - J^r x(from) - t = 0, t being the two variables from `translation` on.
+void add_transition(LinearElimination& elimination, Index from, Index to, int r,
+                    Index translation) {
+  const auto m = quarter_turn_matrix(r);
+  for (Index i = 0; i < 2; ++i) {
+    LinearElimination::Row row{{2 * to + i, 1.0}, {translation + i, -1.0}};
+    for (Index k = 0; k < 2; ++k)
+      if (m[i][k] != 0) row.emplace_back(2 * from + k, -m[i][k]);
+    elimination.add(row);
+  }
+}
+
+}  // namespace
+
+Eigen::SparseMatrix<double> seam_basis(const Mesh& mesh, const Connectivity& c,
+                                       const CrossField& combed,
+                                       const std::vector<std::uint8_t>& cut, const Wedges& wedges) {
+  std::size_t cut_count = 0;
+  for (std::uint8_t x : cut) cut_count += x;
+  const std::size_t wedge_variables = 2 * wedges.count;
+  LinearElimination elimination(wedge_variables + 2 * cut_count);
+  Index translation = static_cast<Index>(wedge_variables);
+  for (Index e = 0; e < c.edge_count(); ++e) {
+    if (!cut[e]) continue;
+    const Index h = c.edge_halfedge[e];
+    const Index t = c.twin[h];
+    const int r = combed.period_jump[h];
+    const auto& w = wedges.corner_wedge;
+    // h runs a -> b in f; its twin b -> a in g. Corner h sits at a, corner next(t) at a too.
+    add_transition(elimination, w[h], w[c.next[t]], r, translation);
+    add_transition(elimination, w[c.next[h]], w[t], r, translation);
+    translation += 2;
+  }
+  // The energy does not see a translation of a whole component: pin one wedge of each.
+  const Components components = connected_components(mesh, c);
+  std::vector<std::uint8_t> pinned(components.count, 0);
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    if (pinned[components.face_component[f]]) continue;
+    pinned[components.face_component[f]] = 1;
+    const Index wedge = wedges.corner_wedge[mesh.face_offsets[f]];
+    for (Index i = 0; i < 2; ++i) elimination.add({{2 * wedge + i, 1.0}});
+  }
+  return elimination.basis(wedge_variables);
+}
+
+Transitions seam_transitions(const Connectivity& c, const CrossField& combed,
+                             const std::vector<std::uint8_t>& cut,
+                             const std::vector<Eigen::Vector2d>& uv) {
+  Transitions tr;
+  tr.rotation.assign(c.halfedge_count(), 0);
+  tr.translation.assign(c.halfedge_count(), Eigen::Vector2d::Zero());
+  for (Index e = 0; e < c.edge_count(); ++e) {
+    if (!cut[e]) continue;
+    const Index h = c.edge_halfedge[e];
+    const Index t = c.twin[h];
+    const int r = combed.period_jump[h];
+    const Eigen::Vector2d shift = uv[c.next[t]] - quarter_turns(uv[h], r);
+    const Eigen::Vector2d error = uv[t] - quarter_turns(uv[c.next[h]], r) - shift;
+    tr.max_error = std::max(tr.max_error, error.norm());
+    tr.rotation[h] = static_cast<std::uint8_t>(r);
+    tr.translation[h] = shift;
+    // The inverse map: uv_f = J^-r uv_g - J^-r t.
+    tr.rotation[t] = static_cast<std::uint8_t>((4 - r) % 4);
+    tr.translation[t] = -quarter_turns(shift, -r);
+  }
+  return tr;
+}
+
+}  // namespace tessera
