@@ -13,5 +13,7 @@ using Args = std::vector<std::string>;
 int info_command(const Args& args);
 int convert_command(const Args& args);
 int regmap_command(const Args& args);
+int field_command(const Args& args);
+int param_command(const Args& args);
 
 }  // namespace tessera::cli
