@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-#include <random>
 #include <string>
 
 #include <Eigen/Sparse>
@@ -11,6 +10,7 @@
 
 #include "base/error.h"
 #include "field/alignment.h"
+#include "field/smoothest.h"
 #include "mesh/topology.h"
 
 namespace tessera {
@@ -22,8 +22,6 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 // Shift that makes the smoothness matrix of an unconstrained component definite for the inverse
 // iteration; far below the smallest eigenvalues of any mesh Tessera handles.
 constexpr double kShift = 1e-8;
-constexpr int kMaxIterations = 300;
-constexpr double kIterationTolerance = 1e-10;
 
 Eigen::Vector2d power(double angle) {
   return {std::cos(4 * angle), std::sin(4 * angle)};
@@ -126,43 +124,15 @@ std::vector<std::uint8_t> unconstrained_faces(const Mesh& mesh, const Connectivi
   return result;
 }
 
-// Scales x on each component to unit mass norm.
-void normalize_per_component(Eigen::VectorXd& x, const PowerSystem& s,
-                             const std::vector<Index>& component, std::size_t component_count) {
-  std::vector<double> norm2(component_count, 0.0);
-  for (Index f = 0; f < s.row.size(); ++f)
-    if (s.row[f] != kNoIndex)
-      norm2[component[f]] += s.mass[f] * x.segment<2>(s.row[f]).squaredNorm();
-  for (Index f = 0; f < s.row.size(); ++f)
-    if (s.row[f] != kNoIndex && norm2[component[f]] > 0)
-      x.segment<2>(s.row[f]) /= std::sqrt(norm2[component[f]]);
-}
-
-// Inverse power iteration (A^-1 M) restricted to the faces in `active`, one component at a time
-// (the matrix is block diagonal over components), from a fixed pseudo-random start.
-Eigen::VectorXd smallest_eigenvectors(const Mesh& mesh, const Connectivity& c, const PowerSystem& s,
-                                      const Eigen::SimplicialLDLT<SparseMatrix>& solver,
-                                      const std::vector<std::uint8_t>& active,
-                                      const Progress& progress) {
+// The first rows of the faces in `active`, grouped by connected component.
+std::vector<std::vector<Index>> component_rows(const Mesh& mesh, const Connectivity& c,
+                                               const PowerSystem& s,
+                                               const std::vector<std::uint8_t>& active) {
   const Components components = connected_components(mesh, c);
-  Eigen::VectorXd mass = Eigen::VectorXd::Zero(s.rhs.size());
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(s.rhs.size());
-  std::mt19937 random(12345);  // mt19937's sequence is fixed by the standard: same on every build
-  for (Index f = 0; f < s.row.size(); ++f) {
-    if (!active[f]) continue;
-    mass.segment<2>(s.row[f]).setConstant(s.mass[f]);
-    for (int i = 0; i < 2; ++i) x[s.row[f] + i] = random() / 4294967296.0 - 0.5;
-  }
-  normalize_per_component(x, s, components.face_component, components.count);
-  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    progress.step("field", 0.3 + 0.7 * iteration / kMaxIterations);
-    Eigen::VectorXd next = solver.solve(mass.cwiseProduct(x));
-    normalize_per_component(next, s, components.face_component, components.count);
-    const double change = (next - x).cwiseAbs().maxCoeff();
-    x = std::move(next);
-    if (change < kIterationTolerance) break;
-  }
-  return x;
+  std::vector<std::vector<Index>> rows(components.count);
+  for (Index f = 0; f < s.row.size(); ++f)
+    if (active[f]) rows[components.face_component[f]].push_back(s.row[f]);
+  return rows;
 }
 
 }  // namespace
@@ -196,7 +166,13 @@ CrossField design_cross_field(const Mesh& mesh, const Connectivity& c, const Fac
   Eigen::VectorXd z = solver.solve(s.rhs);
   bool any_unconstrained = false;
   for (std::uint8_t u : unconstrained) any_unconstrained |= u != 0;
-  if (any_unconstrained) z += smallest_eigenvectors(mesh, c, s, solver, unconstrained, progress);
+  if (any_unconstrained) {
+    Eigen::VectorXd mass(s.rhs.size());
+    for (Index f = 0; f < s.row.size(); ++f)
+      if (s.row[f] != kNoIndex) mass.segment<2>(s.row[f]).setConstant(s.mass[f]);
+    z += smoothest_power_fields(s.matrix, solver, mass, component_rows(mesh, c, s, unconstrained),
+                                progress);
+  }
 
   std::vector<double> angle(mesh.face_count());
   for (Index f = 0; f < mesh.face_count(); ++f)

@@ -9,7 +9,7 @@
 //    principal curvature target c_T (alignment.h); the blend is one linear solve as well. Both
 //    terms are dimensionless, so the weight means the same at any scale and resolution.
 //  - A connected component with neither constraints nor curvature term gets its smoothest field:
-//    the eigenvector of the smallest eigenvalue, by inverse power iteration with one sparse LDLT
+//    the eigenvector of the smallest eigenvalue (smoothest.h), with the same sparse LDLT
 //    factorization.
 //
 // In:  a triangle mesh with connectivity and face frames, the options, a progress listener.

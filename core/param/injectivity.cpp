@@ -292,6 +292,10 @@ InjectivityReport enforce_bisector_constraints(const Mesh& mesh, const PoissonPr
       if (face_column[f] != kNoIndex) program_faces[find_root(parent, face_column[f])].push_back(f);
     for (Index root = 0; root < movable.size(); ++root) {
       if (program_columns[root].empty()) continue;
+      if (program_faces[root].size() > options.max_program_faces) {
+        ++report.skipped_programs;
+        continue;
+      }
       ++report.programs;
       if (!solve_program(p, rows, program_columns[root], program_faces[root], local, options,
                          mean_area, y))

@@ -31,12 +31,16 @@ struct InjectivityOptions {
   int rounds = 3;
   double margin = 0.1;          // m, relative to the unit frame
   double slack_weight = 100.0;  // W
+  // Larger programs are skipped (their triangles keep their values): widespread flips mean the
+  // field does not suit the surface, and the simplex method would take minutes.
+  std::size_t max_program_faces = 5000;
 };
 
 struct InjectivityReport {
   std::size_t rounds = 0;             // rounds that had triangles to constrain
   std::size_t programs = 0;           // linear programs set up
   std::size_t unsolved_programs = 0;  // of those, where GLPK found no optimum (values kept)
+  std::size_t skipped_programs = 0;   // above max_program_faces, not solved
   std::size_t constrained_faces = 0;  // triangles under bisector constraints, summed over rounds
 };
 

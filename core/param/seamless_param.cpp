@@ -56,6 +56,20 @@ double bounding_diagonal(const std::vector<Eigen::Vector2d>& points) {
   return (high - low).norm();
 }
 
+// A closed surface without singularities is a torus (Poincare-Hopf); a seamless parameterization
+// makes it a flat torus, whose charts only translate around its loops. A field that turns by
+// quarter turns around a loop (nonzero rotation across a cut edge) admits none.
+void check_flat_holonomy(const Connectivity& c, const CrossField& field, const CrossField& combed,
+                         const std::vector<std::uint8_t>& cut) {
+  if (!field.singularities.empty() || c.halfedge_count() != c.corner_count) return;
+  for (Index e = 0; e < c.edge_count(); ++e)
+    if (cut[e] && combed.period_jump[c.edge_halfedge[e]] != 0)
+      throw InputError(
+          "the cross field has no singularities but turns by a quarter turn around a loop of the "
+          "torus, so no seamless parameterization exists; use a field aligned to the principal "
+          "curvature directions (--align curvature) or one with singularities");
+}
+
 }  // namespace
 
 SeamlessParam seamless_parameterization(const Mesh& mesh, const Connectivity& c,
@@ -73,6 +87,7 @@ SeamlessParam seamless_parameterization(const Mesh& mesh, const Connectivity& c,
   const DualTree tree = dual_spanning_tree(c, field);
   const CrossField combed = comb(c, frames, field, tree);
   param.cut = cut_graph(c, combed, tree);
+  check_flat_holonomy(c, field, combed, param.cut);
   const Wedges wedges = cut_wedges(c, param.cut);
   timer.finish("cut graph");
 

@@ -10,8 +10,9 @@
 //     (injectivity.h).
 //
 // In:  a triangle mesh, its connectivity and face frames, a cross field of it, the options.
-// Out: the SeamlessParam value. Throws InputError for bad options, CancelledError when cancelled,
-//      Error if the sparse factorization fails.
+// Out: the SeamlessParam value. Throws InputError for bad options or a field that admits no
+//      seamless parameterization (a singularity-free field turning around a loop of a torus),
+//      CancelledError when cancelled, Error if the sparse factorization fails.
 #pragma once
 
 #include <cstdint>

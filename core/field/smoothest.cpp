@@ -1,0 +1,102 @@
+#include "field/smoothest.h"
+
+#include <cmath>
+#include <random>
+
+#include <Eigen/Dense>
+
+namespace tessera {
+namespace {
+
+using Dense = Eigen::MatrixXd;
+
+constexpr int kBlock = 8;  // real vectors: four complex directions
+constexpr int kMaxIterations = 200;
+constexpr double kResidual = 1e-9;    // relative residual of the lowest Ritz pair
+constexpr double kDegenerate = 1e-6;  // relative gap below which eigenvalues count as equal
+constexpr int kUniformIterations = 50;
+
+struct RitzPairs {
+  Dense vectors;           // columns, mass-orthonormal
+  Eigen::VectorXd values;  // ascending
+};
+
+// Rayleigh-Ritz of the matrix in the span of the columns of x.
+RitzPairs rayleigh_ritz(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& mass,
+                        const Dense& x) {
+  const Dense k = x.transpose() * (a * x);
+  const Dense g = x.transpose() * mass.asDiagonal() * x;
+  Eigen::GeneralizedSelfAdjointEigenSolver<Dense> small(0.5 * (k + k.transpose()),
+                                                        0.5 * (g + g.transpose()));
+  return {x * small.eigenvectors(), small.eigenvalues()};
+}
+
+// The combination c of the columns (mass-orthonormal) with |c| = 1 whose field has the least
+// sum_T M_T |z_T|^4: repeatedly the lowest eigenvector of H(c) = sum_T M_T |z_T|^2 P_T, the
+// stationarity condition of that quartic on the unit sphere.
+Eigen::VectorXd most_uniform(const Dense& basis, const Eigen::VectorXd& mass,
+                             const std::vector<Index>& rows) {
+  const Eigen::Index m = basis.cols();
+  Eigen::VectorXd c = Eigen::VectorXd::Unit(m, 0);
+  for (int iteration = 0; iteration < kUniformIterations; ++iteration) {
+    Dense h = Dense::Zero(m, m);
+    for (Index r : rows) {
+      const Dense b = basis.middleRows(r, 2);  // 2 x m: real and imaginary part of z_T
+      const double magnitude2 = (b * c).squaredNorm();
+      h += mass[r] * magnitude2 * (b.transpose() * b);
+    }
+    Eigen::SelfAdjointEigenSolver<Dense> eigen(h);
+    Eigen::VectorXd next = eigen.eigenvectors().col(0);
+    if (next.dot(c) < 0) next = -next;
+    const double change = (next - c).norm();
+    c = next;
+    if (change < 1e-12) break;
+  }
+  return basis * c;
+}
+
+Eigen::VectorXd smoothest_on_component(
+    const Eigen::SparseMatrix<double>& a,
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& solver, const Eigen::VectorXd& mass,
+    const std::vector<Index>& rows, const Progress& progress) {
+  const Eigen::Index n = mass.size();
+  Eigen::VectorXd support = Eigen::VectorXd::Zero(n);
+  for (Index r : rows) support.segment<2>(r).setOnes();
+  const int block = static_cast<int>(std::min<std::size_t>(kBlock, 2 * rows.size()));
+  Dense x = Dense::Zero(n, block);
+  std::mt19937 random(12345);  // mt19937's sequence is fixed by the standard: same on every build
+  for (int j = 0; j < block; ++j)
+    for (Index r : rows)
+      for (int i = 0; i < 2; ++i) x(r + i, j) = random() / 4294967296.0 - 0.5;
+
+  RitzPairs ritz = rayleigh_ritz(a, mass, x);
+  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    progress.step("field", 0.3 + 0.6 * iteration / kMaxIterations);
+    const Eigen::VectorXd lowest = ritz.vectors.col(0);
+    const double residual = (a * lowest - ritz.values[0] * mass.cwiseProduct(lowest)).norm() /
+                            (std::abs(ritz.values[0]) * mass.cwiseProduct(lowest).norm());
+    if (residual < kResidual) break;
+    for (int j = 0; j < block; ++j)
+      x.col(j) = solver.solve(mass.cwiseProduct(ritz.vectors.col(j))).cwiseProduct(support);
+    ritz = rayleigh_ritz(a, mass, x);
+  }
+  int degenerate = 1;
+  while (degenerate < block &&
+         ritz.values[degenerate] <= ritz.values[0] * (1 + kDegenerate) + 1e-300)
+    ++degenerate;
+  return most_uniform(ritz.vectors.leftCols(degenerate), mass, rows);
+}
+
+}  // namespace
+
+Eigen::VectorXd smoothest_power_fields(
+    const Eigen::SparseMatrix<double>& matrix,
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& solver, const Eigen::VectorXd& mass,
+    const std::vector<std::vector<Index>>& component_rows, const Progress& progress) {
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(mass.size());
+  for (const std::vector<Index>& rows : component_rows)
+    if (!rows.empty()) z += smoothest_on_component(matrix, solver, mass, rows, progress);
+  return z;
+}
+
+}  // namespace tessera
