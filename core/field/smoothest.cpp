@@ -12,7 +12,7 @@ using Dense = Eigen::MatrixXd;
 
 constexpr int kBlock = 8;  // real vectors: four complex directions
 constexpr int kMaxIterations = 200;
-constexpr double kResidual = 1e-9;    // relative residual of the lowest Ritz pair
+constexpr double kResidual = 1e-6;    // relative residual of the lowest Ritz pair
 constexpr double kDegenerate = 1e-6;  // relative gap below which eigenvalues count as equal
 constexpr int kUniformIterations = 50;
 
@@ -32,19 +32,23 @@ RitzPairs rayleigh_ritz(const Eigen::SparseMatrix<double>& a, const Eigen::Vecto
 }
 
 // The combination c of the columns (mass-orthonormal) with |c| = 1 whose field has the least
-// sum_T M_T |z_T|^4: repeatedly the lowest eigenvector of H(c) = sum_T M_T |z_T|^2 P_T, the
-// stationarity condition of that quartic on the unit sphere.
+// sum_T M_T |z_T|^4: repeatedly the lowest eigenvector of H(c) = sum_T M_T |z_T|^2 B_T^T B_T
+// (B_T: the two rows of face T), the stationarity condition of that quartic on the unit sphere.
 Eigen::VectorXd most_uniform(const Dense& basis, const Eigen::VectorXd& mass,
                              const std::vector<Index>& rows) {
-  const Eigen::Index m = basis.cols();
-  Eigen::VectorXd c = Eigen::VectorXd::Unit(m, 0);
+  Dense b(2 * rows.size(), basis.cols());
+  Eigen::VectorXd face_mass(2 * rows.size());
+  for (Eigen::Index k = 0; k < static_cast<Eigen::Index>(rows.size()); ++k) {
+    b.middleRows(2 * k, 2) = basis.middleRows(rows[k], 2);
+    face_mass.segment<2>(2 * k).setConstant(mass[rows[k]]);
+  }
+  Eigen::VectorXd c = Eigen::VectorXd::Unit(basis.cols(), 0);
   for (int iteration = 0; iteration < kUniformIterations; ++iteration) {
-    Dense h = Dense::Zero(m, m);
-    for (Index r : rows) {
-      const Dense b = basis.middleRows(r, 2);  // 2 x m: real and imaginary part of z_T
-      const double magnitude2 = (b * c).squaredNorm();
-      h += mass[r] * magnitude2 * (b.transpose() * b);
-    }
+    const Eigen::VectorXd z = b * c;
+    Eigen::VectorXd weight(z.size());
+    for (Eigen::Index k = 0; k < z.size(); k += 2)
+      weight.segment<2>(k).setConstant(face_mass[k] * z.segment<2>(k).squaredNorm());
+    const Dense h = b.transpose() * weight.asDiagonal() * b;
     Eigen::SelfAdjointEigenSolver<Dense> eigen(h);
     Eigen::VectorXd next = eigen.eigenvectors().col(0);
     if (next.dot(c) < 0) next = -next;
@@ -84,6 +88,8 @@ Eigen::VectorXd smoothest_on_component(
   while (degenerate < block &&
          ritz.values[degenerate] <= ritz.values[0] * (1 + kDegenerate) + 1e-300)
     ++degenerate;
+  // One complex eigenvalue (z and i z): every combination is the same field turned.
+  if (degenerate <= 2) return ritz.vectors.col(0);
   return most_uniform(ritz.vectors.leftCols(degenerate), mass, rows);
 }
 
