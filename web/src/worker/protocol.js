@@ -10,8 +10,8 @@
  * Worker -> page, any number of progress events, then exactly one result or error:
  *   { id, type: 'progress', stage, fraction }   stage: a short text; fraction: 0..1 over the whole job
  *   { id, type: 'result', payload }             typed arrays in payload are transferred, not copied
- *   { id, type: 'error', kind, message }        kind: the core's error kind ('parse', 'topology',
- *                                               'geometry', 'limit', 'internal') or one of ours below
+ *   { id, type: 'error', kind, message }        kind: the core's error kind ('parse', 'input',
+ *                                               'topology', 'geometry', 'limit', 'internal') or one of ours below
  *
  * Cancellation is not a message: the page terminates the worker and starts a fresh one (a stage
  * inside the wasm module cannot be interrupted any other way), and every pending request is
@@ -24,6 +24,11 @@ export const COMMANDS = Object.freeze({
   sampleMesh: 'sampleMesh', // payload: { name } -> mesh (see worker.js)
   loadMesh: 'loadMesh', // payload: { file: File } -> mesh
   exportGlb: 'exportGlb', // payload: { positions, triangles, faceIds?, colors?, extras? } -> { bytes }
+  // Regular maps. A map is a catalog name (R3.1, R3.1' for the dual) or a presentation in Conder's
+  // text format; its info is { name, p, q, order, vertices, edges, faces, genus, orientable, euler,
+  // petrie, seconds }.
+  regmapCatalog: 'regmapCatalog', // payload: none -> { rows: [{ name, genus, p, q, petrie, order, vertices, edges, faces }] }
+  regmapTiling: 'regmapTiling', // payload: { map } -> { info, svg, polygon: { triangles, boundaryPairs, euler, boundaryCycles } }
 });
 
 /** Error kinds that the page adds to the core's. */

@@ -8,6 +8,7 @@ import { polygonEdges, vertexNormals } from './display.js';
 const CORE_URL = new URL(`${import.meta.env.BASE_URL}wasm/tessera.mjs`, self.location.href).href;
 
 let core = null; // Promise of the wasm module, created on first use, dropped after a trap
+const catalogs = new WeakMap(); // wasm module -> its catalog rows, read into it once
 
 function loadCore() {
   core ??= import(/* @vite-ignore */ CORE_URL)
@@ -51,7 +52,32 @@ const handlers = {
     const module = await loadCore();
     return { bytes: module.exportGlb(payload) };
   },
+
+  async [COMMANDS.regmapCatalog](_, progress) {
+    progress('Starting the geometry core', 0);
+    const module = await loadCore();
+    progress('Reading the catalog of regular maps', 0.3);
+    return { rows: await catalogOf(module) };
+  },
+
+  async [COMMANDS.regmapTiling]({ map }, progress) {
+    progress('Starting the geometry core', 0);
+    const module = await loadCore();
+    await catalogOf(module);
+    progress('Enumerating the group and drawing its tiling', 0.3);
+    return module.regmapTiling(String(map));
+  },
 };
+
+// The shipped catalog, bundled with the page as text (a chunk of its own, loaded on first use) and
+// read by the core, which also needs it to resolve map names.
+async function catalogOf(module) {
+  if (!catalogs.has(module)) {
+    const { default: text } = await import('../../../data/regmaps/catalog_g2-101.tsv?raw');
+    catalogs.set(module, module.regmapLoadCatalog(text));
+  }
+  return catalogs.get(module);
+}
 
 // The core's MeshResult plus what the viewer draws: vertex normals and the polygons' edges.
 function meshForViewer(mesh, progress) {
