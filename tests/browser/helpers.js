@@ -13,9 +13,9 @@ export async function idle(page) {
   await page.locator('[data-role=progress]').waitFor({ state: 'hidden' });
 }
 
-/** The text of one figure of the info panel, e.g. figure(page, 'genus'). */
+/** The text of one figure of the mesh's info panel, e.g. figure(page, 'genus'). */
 export function figure(page, key) {
-  return page.locator(`[data-figure=${key}]`).textContent();
+  return page.locator(`#quad-panel [data-figure=${key}]`).textContent();
 }
 
 export const meshName = (page) => page.locator('[data-role=mesh-name]').textContent();
@@ -51,11 +51,11 @@ export async function chooseSample(page, name) {
 }
 
 /**
- * The share of the canvas's pixels that differ from the background, from a screenshot decoded in
- * the page itself (no image library needed here).
+ * The share of an element's pixels (by default the 3D view's canvas) that differ from a background
+ * colour, from a screenshot decoded in the page itself (no image library needed here).
  */
-export async function foregroundShare(page) {
-  const png = await page.locator('#viewport canvas').screenshot();
+export async function foregroundShare(page, selector = '#viewport canvas', background = BACKGROUND_RGB) {
+  const png = await page.locator(selector).screenshot();
   return page.evaluate(
     async ({ base64, background }) => {
       const blob = await (await fetch(`data:image/png;base64,${base64}`)).blob();
@@ -71,7 +71,7 @@ export async function foregroundShare(page) {
       }
       return differing / (data.length / 4);
     },
-    { base64: png.toString('base64'), background: BACKGROUND_RGB },
+    { base64: png.toString('base64'), background },
   );
 }
 
@@ -95,4 +95,36 @@ export function gridObj(n) {
   }
   lines.push('');
   return lines.join('\n');
+}
+
+export const PAPER_RGB = [0xf6, 0xf3, 0xec]; // the sheet behind a tiling (.tiling-stage img in style.css)
+
+/** Opens the page on a link of the Regular maps mode and waits until a map is shown and no job runs. */
+export async function openMap(page, url, hash = '#mode=regmap') {
+  await page.goto(`${url}${hash}`);
+  await page.locator('[data-role=map-name]').filter({ hasText: /\S/ }).waitFor();
+  await idle(page);
+}
+
+/** Waits until the panel's title is exactly `title` (a map name) and no job runs. */
+export async function mapShown(page, title) {
+  const exactly = new RegExp(`^${title.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}$`);
+  await page.locator('[data-role=map-name]').filter({ hasText: exactly }).waitFor();
+  await idle(page);
+}
+
+/** The text of one figure of the map's panel, e.g. mapFigure(page, 'order'). */
+export function mapFigure(page, key) {
+  return page.locator(`#regmap-panel [data-figure=${key}]`).textContent();
+}
+
+/** The tiling image's state: decoded, its source a Blob URL, its share of drawn (non-paper) pixels. */
+export async function tilingImage(page) {
+  const image = page.locator('#tiling-view img');
+  const { complete, naturalWidth, src } = await image.evaluate((img) => ({
+    complete: img.complete,
+    naturalWidth: img.naturalWidth,
+    src: img.src,
+  }));
+  return { complete, naturalWidth, src, drawn: await foregroundShare(page, '#tiling-view img', PAPER_RGB) };
 }

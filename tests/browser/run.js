@@ -1,6 +1,7 @@
 // `npm run test:browser [-- name-filter]`: the Playwright tests of the page (see harness.js).
 import { runTests } from './harness.js';
 import './page.test.js';
+import './regmap.test.js';
 
 const ok = await runTests(process.argv[2] ?? '');
 process.exit(ok ? 0 : 1);

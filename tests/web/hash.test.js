@@ -9,17 +9,17 @@ describe('parseHash', () => {
   });
 
   it('reads every shareable key', () => {
-    const { state, problems } = parseHash('#mode=quad&sample=genus2&shading=smooth&wireframe=1');
+    const { state, problems } = parseHash('#mode=regmap&sample=genus2&shading=smooth&wireframe=1&map=R3.1');
     expect(problems).toEqual([]);
-    expect(state).toEqual({ mode: 'quad', sample: 'genus2', shading: 'smooth', wireframe: true });
+    expect(state).toEqual({ mode: 'regmap', sample: 'genus2', shading: 'smooth', wireframe: true, map: 'R3.1' });
     expect(parseHash('wireframe=0').state.wireframe).toBe(false);
   });
 
   it('drops malformed values with a note and keeps the defaults', () => {
-    const { state, problems } = parseHash('#mode=regmap&shading=shiny&wireframe=yes&sample=');
+    const { state, problems } = parseHash('#mode=gallery&shading=shiny&wireframe=yes&sample=&map=');
     expect(state).toEqual(DEFAULT_STATE);
-    expect(problems).toHaveLength(4);
-    expect(problems.join(' ')).toMatch(/"mode".*"shading".*"wireframe".*"sample"/);
+    expect(problems).toHaveLength(5);
+    expect(problems.join(' ')).toMatch(/"mode".*"shading".*"wireframe".*"sample".*"map"/);
   });
 
   it('refuses sample names that could be markup, paths or anything long', () => {
@@ -53,16 +53,29 @@ describe('parseHash', () => {
     expect(() => parseHash('#sample=%E0%A4%A&shading=%')).not.toThrow();
     expect(parseHash('#sample=%E0%A4%A').state.sample).toBeNull();
   });
+
+  it('takes map names of the form Rg.n, with a prime for the dual, and nothing else', () => {
+    for (const map of ['R2.4', "R2.4'", 'R101.56', 'R3.1']) {
+      expect(parseHash(`#map=${encodeURIComponent(map)}`)).toEqual({ state: { ...DEFAULT_STATE, map }, problems: [] });
+    }
+    const refused = ['r3.1', 'R3', 'R3.', 'R.1', "R3.1''", 'R3.1 ', 'R-3.1', 'R3.1x', '<script>', 'R12345.1', 'R3.123456'];
+    for (const map of refused) {
+      const { state, problems } = parseHash(`#map=${encodeURIComponent(map)}`);
+      expect(state.map, map).toBeNull();
+      expect(problems, map).toEqual(['Link setting "map" has an invalid value and was ignored.']);
+    }
+  });
 });
 
 describe('formatHash', () => {
   it('writes the mode and only what differs from the defaults', () => {
     expect(formatHash(DEFAULT_STATE)).toBe('#mode=quad');
     expect(formatHash({ ...DEFAULT_STATE, sample: 'torus', wireframe: true })).toBe('#mode=quad&sample=torus&wireframe=1');
+    expect(formatHash({ ...DEFAULT_STATE, mode: 'regmap', map: "R2.4'" })).toBe('#mode=regmap&map=R2.4%27');
   });
 
   it('round-trips through parseHash', () => {
-    const state = { mode: 'quad', sample: "R3.1'", shading: 'smooth', wireframe: true };
+    const state = { mode: 'regmap', sample: "R3.1'", shading: 'smooth', wireframe: true, map: "R3.1'" };
     expect(parseHash(formatHash(state))).toEqual({ state, problems: [] });
   });
 });

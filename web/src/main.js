@@ -1,4 +1,4 @@
-// The page: composes the viewer, the worker client, the status line, the mode and the URL state.
+// The page: composes the viewer, the worker client, the status line, the modes and the URL state.
 import './style.css';
 import { Viewer } from './viewer/viewer.js';
 import { WorkerClient } from './worker/client.js';
@@ -9,6 +9,8 @@ import { createViewControls } from './ui/view-controls.js';
 import { createTabs } from './ui/tabs.js';
 import { formatHash, parseHash } from './ui/hash.js';
 import { QuadLayoutMode } from './ui/quad-layout-mode.js';
+import { RegularMapMode } from './ui/regmap-mode.js';
+import { TilingView } from './ui/tiling-view.js';
 import { MODES } from './ui/modes.js';
 
 const byId = (id) => document.getElementById(id);
@@ -16,6 +18,7 @@ const client = new WorkerClient(
   () => new Worker(new URL('./worker/worker.js', import.meta.url), { type: 'module' }),
 );
 const status = new Status(byId('status'), { onCancel: () => client.cancel() });
+const jobs = new Jobs(client, status);
 window.addEventListener('unhandledrejection', (event) => status.showError(event.reason));
 
 let { state, problems: linkProblems } = parseHash(location.hash);
@@ -28,8 +31,35 @@ function updateState(partial) {
   history.replaceState(null, '', formatHash(state));
 }
 
-const selectTab = createTabs(byId('modes'), MODES, (mode) => updateState({ mode }));
-selectTab(state.mode);
+// The modes by id; each starts the first time it is shown. The Quad layout mode needs the 3D view.
+const modes = {
+  regmap: new RegularMapMode({
+    panel: byId('regmap-panel'),
+    view: new TilingView(byId('tiling-view')),
+    client,
+    jobs,
+    status,
+    onStateChange: updateState,
+  }),
+};
+const started = new Set();
+
+const selectTab = createTabs(byId('modes'), MODES, (mode) => {
+  updateState({ mode });
+  showMode();
+});
+
+/** Shows the mode of the state (its tab, panel and view) and brings it to the state. */
+function showMode() {
+  const id = state.mode;
+  selectTab(id);
+  for (const part of document.querySelectorAll('[data-for-mode]')) part.hidden = part.dataset.forMode !== id;
+  const mode = modes[id];
+  if (!mode) return Promise.resolve();
+  if (started.has(id)) return mode.applyState(state);
+  started.add(id);
+  return mode.start(state);
+}
 
 let viewer;
 try {
@@ -44,35 +74,47 @@ try {
   status.showError({ kind: 'internal', message: `The 3D view could not start (${error.message}). Tessera needs a browser with WebGL 2.` });
 }
 
+let viewControls;
+const applyView = (settings) => {
+  viewer?.setShading(settings.shading);
+  viewer?.setWireframe(settings.wireframe);
+};
+
 if (viewer) {
   const view = { shading: state.shading, wireframe: state.wireframe };
-  const applyView = (settings) => {
-    viewer.setShading(settings.shading);
-    viewer.setWireframe(settings.wireframe);
-  };
-  const viewControls = createViewControls(byId('view-controls'), view, (settings) => {
+  viewControls = createViewControls(byId('view-controls'), view, (settings) => {
     applyView(settings);
     updateState(settings);
   });
   applyView(view);
 
-  const mode = new QuadLayoutMode({
+  modes.quad = new QuadLayoutMode({
     panel: byId('quad-panel'),
     viewer,
     client,
-    jobs: new Jobs(client, status),
+    jobs,
     status,
     onStateChange: updateState,
   });
-  acceptFiles({ target: document.body, input: byId('file-input'), onFiles: (files) => mode.openFiles(files) });
-
-  window.addEventListener('hashchange', () => {
-    ({ state, problems: linkProblems } = parseHash(location.hash));
-    selectTab(state.mode);
-    viewControls.update({ shading: state.shading, wireframe: state.wireframe });
-    applyView(state);
-    mode.applyState(state).then(reportLinkProblems);
+  // A mesh file dropped in another mode opens in the Quad layout mode.
+  acceptFiles({
+    target: document.body,
+    input: byId('file-input'),
+    onFiles: async (files) => {
+      if (state.mode !== 'quad') {
+        updateState({ mode: 'quad' });
+        await showMode();
+      }
+      await modes.quad.openFiles(files);
+    },
   });
-
-  mode.start(state).then(reportLinkProblems);
 }
+
+window.addEventListener('hashchange', () => {
+  ({ state, problems: linkProblems } = parseHash(location.hash));
+  viewControls?.update({ shading: state.shading, wireframe: state.wireframe });
+  applyView(state);
+  showMode().then(reportLinkProblems);
+});
+
+showMode().then(reportLinkProblems);

@@ -1,6 +1,6 @@
-/** Offers bytes to the user as a file download named fileName. */
-export function downloadBytes(bytes, fileName, type = 'application/octet-stream') {
-  const url = URL.createObjectURL(new Blob([bytes], { type }));
+/** Offers data (bytes or text) to the user as a file download named fileName. */
+export function downloadBytes(data, fileName, type = 'application/octet-stream') {
+  const url = URL.createObjectURL(new Blob([data], { type }));
   const link = document.createElement('a');
   link.href = url;
   link.download = fileName;

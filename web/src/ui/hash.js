@@ -9,6 +9,8 @@ const MAX_HASH_LENGTH = 2000;
 const oneOf = (values) => (text) => (values.includes(text) ? text : undefined);
 const name = (text) => (/^[A-Za-z0-9][A-Za-z0-9_.'-]{0,63}$/.test(text) ? text : undefined);
 const flag = (text) => ({ 1: true, 0: false })[text];
+// A catalog name (Rg.n, a prime for the dual); whether the catalog holds it is the mode's question.
+const mapName = (text) => (/^R\d{1,4}\.\d{1,5}'?$/.test(text) ? text : undefined);
 
 /** Each shareable key, with its parser (text -> value, or undefined when malformed). */
 const FIELDS = Object.freeze({
@@ -16,6 +18,7 @@ const FIELDS = Object.freeze({
   sample: name,
   shading: oneOf(['flat', 'smooth']),
   wireframe: flag,
+  map: mapName,
 });
 
 export const DEFAULT_STATE = Object.freeze({
@@ -23,6 +26,7 @@ export const DEFAULT_STATE = Object.freeze({
   sample: null,
   shading: 'flat',
   wireframe: false,
+  map: null,
 });
 
 /**

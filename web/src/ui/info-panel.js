@@ -1,7 +1,7 @@
-// The figures of a mesh (the core's `info`) as a definition list, written as text only: every
-// string here may come from a user's file.
+// Figures (of a mesh, of a map) as a definition list, written as text only: every string here may
+// come from a user's file or a typed presentation.
 
-const count = (n) => Number(n).toLocaleString('en-US');
+export const count = (n) => Number(n).toLocaleString('en-US');
 const yesNo = (value) => (value ? 'yes' : 'no');
 
 const FIGURES = [
@@ -30,20 +30,27 @@ export function faceSizes(sizes) {
     .join('\n');
 }
 
-/** Fills `panel` (the info section) with the mesh's name, figures and warnings. */
-export function showInfo(panel, { name, info }) {
-  panel.querySelector('[data-role=mesh-name]').textContent = name;
-  const list = panel.querySelector('[data-role=figures]');
+/**
+ * Writes figures into a definition list, as text. figures: [key, label, format]; values: an object
+ * with the keys (a missing key shows a dash).
+ */
+export function fillFigures(list, figures, values) {
   list.replaceChildren(
-    ...FIGURES.flatMap(([key, label, format]) => {
+    ...figures.flatMap(([key, label, format]) => {
       const term = document.createElement('dt');
       term.textContent = label;
       const value = document.createElement('dd');
       value.dataset.figure = key;
-      value.textContent = key in info ? format(info[key]) : '–';
+      value.textContent = key in values ? format(values[key]) : '–';
       return [term, value];
     }),
   );
+}
+
+/** Fills `panel` (the info section) with the mesh's name, figures and warnings. */
+export function showInfo(panel, { name, info }) {
+  panel.querySelector('[data-role=mesh-name]').textContent = name;
+  fillFigures(panel.querySelector('[data-role=figures]'), FIGURES, info);
   const warnings = panel.querySelector('[data-role=warnings]');
   warnings.replaceChildren(
     ...(info.warnings ?? []).map((text) => {

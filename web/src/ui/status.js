@@ -2,7 +2,8 @@
 // or notice in plain words. Messages are set as text, never as markup.
 
 const ERROR_TITLES = {
-  parse: 'The file could not be read',
+  parse: 'The input could not be read',
+  input: 'The input cannot be used',
   topology: 'The mesh has a connectivity Tessera cannot use',
   geometry: 'The mesh has unusable geometry',
   limit: 'The input is beyond a limit',

@@ -1,0 +1,126 @@
+import { COMMANDS } from '../worker/protocol.js';
+import { filterCatalog, findMap, parseQuery } from './catalog-filter.js';
+import { count, fillFigures } from './info-panel.js';
+import { MAP_FIGURES, mapFigureValues } from './map-figures.js';
+import { VirtualList } from './virtual-list.js';
+
+const DEFAULT_MAP = 'R3.1'; // Klein's quartic
+const ROW_HEIGHT = 24; // CSS pixels, as .catalog-list [role=option] in style.css
+const SEARCH_FIELDS = ['name', 'genus', 'type'];
+
+/**
+ * The Regular maps mode: the catalog with its search, a map's figures and its tiling, and maps
+ * typed as presentations. Every name and presentation is user text and is shown as text only.
+ * panel: the mode's section of the page; view (TilingView), client (WorkerClient), jobs (Jobs),
+ * status (Status); onStateChange(partial state) when what a link should share changes.
+ */
+export class RegularMapMode {
+  constructor({ panel, view, client, jobs, status, onStateChange }) {
+    Object.assign(this, { panel, view, client, jobs, status, onStateChange });
+    this.part = (role) => panel.querySelector(`[data-role=${role}]`);
+    this.rows = null; // the catalog, once read
+    this.shown = null; // { name, info }: the map on screen; name is null for a typed presentation
+
+    this.list = new VirtualList(this.part('catalog-list'), {
+      rowHeight: ROW_HEIGHT,
+      fillRow: catalogRow,
+      keyOf: (entry) => entry.name,
+      onChoose: (entry) => this.showMap(entry.name),
+    });
+    for (const field of SEARCH_FIELDS) this.searchField(field).addEventListener('input', () => this.search());
+    this.part('dual').addEventListener('click', () => this.showMap(dualName(this.shown.name)));
+    this.part('run-presentation').addEventListener('click', () => this.runPresentation());
+    this.part('presentation').addEventListener('keydown', (event) => {
+      if (event.key === 'Enter' && (event.ctrlKey || event.metaKey)) this.runPresentation();
+    });
+  }
+
+  /** Reads the catalog and shows state.map (or the default map). */
+  async start(state) {
+    const reply = await this.request('Reading the catalog of regular maps', COMMANDS.regmapCatalog, null);
+    if (!reply) return;
+    this.rows = reply.rows;
+    this.search();
+    await this.applyState(state);
+  }
+
+  /** Shows the map a link names; without a valid one, keeps the map on screen (or the default). */
+  async applyState({ map }) {
+    if (!this.rows) return;
+    const known = map !== null && findMap(this.rows, map) !== undefined;
+    if (known && map !== this.shown?.name) await this.showMap(map);
+    if (!known && !this.shown) await this.showMap(DEFAULT_MAP);
+    if (map !== null && !known) {
+      this.status.showNotice(
+        `There is no map named "${map}" in the catalog.`,
+        `It holds ${count(this.rows.length)} maps, ${this.rows[0].name} to ${this.rows.at(-1).name} (a prime names the dual).`,
+      );
+    }
+  }
+
+  async showMap(name) {
+    const result = await this.request(`Enumerating ${name} and drawing its tiling`, COMMANDS.regmapTiling, { map: name });
+    if (result) await this.show(result, name);
+  }
+
+  async runPresentation() {
+    const text = this.part('presentation').value.trim();
+    const label = 'Enumerating the typed presentation and drawing its tiling';
+    const result = await this.request(label, COMMANDS.regmapTiling, { map: text });
+    if (result) await this.show(result, null);
+  }
+
+  /** A tiling result from the worker, for a catalog map (name) or a typed presentation (null). */
+  async show(result, name) {
+    const title = name ?? `${result.info.name || 'A map'} (typed presentation)`;
+    try {
+      await this.view.show(result.svg, name ?? result.info.name);
+    } catch (error) {
+      this.status.showError(error);
+      return;
+    }
+    this.shown = { name, info: result.info };
+    this.part('map-name').textContent = title;
+    fillFigures(this.part('map-figures'), MAP_FIGURES, mapFigureValues(result));
+    const dual = this.part('dual');
+    dual.hidden = name === null;
+    if (name !== null) dual.textContent = `Show its dual, ${dualName(name)}`;
+    this.list.setChosen(name);
+    this.onStateChange({ map: name });
+  }
+
+  search() {
+    if (!this.rows) return;
+    const { query, problems } = parseQuery(
+      Object.fromEntries(SEARCH_FIELDS.map((field) => [field, this.searchField(field).value])),
+    );
+    for (const field of SEARCH_FIELDS) {
+      this.searchField(field).setAttribute('aria-invalid', String(Object.hasOwn(problems, field)));
+    }
+    const entries = filterCatalog(this.rows, query);
+    this.list.setItems(entries);
+    const found = entries.length === 0 ? 'No map matches.' : `${count(entries.length)} of ${count(this.rows.length)} maps`;
+    this.part('catalog-count').textContent = [...Object.values(problems), found].join(' ');
+  }
+
+  searchField(field) {
+    return this.part(`search-${field}`);
+  }
+
+  request(label, command, payload) {
+    return this.jobs.run(label, (onProgress) => this.client.request(command, payload, { onProgress }));
+  }
+}
+
+/** R3.1 <-> R3.1'. */
+const dualName = (name) => (name.endsWith("'") ? name.slice(0, -1) : `${name}'`);
+
+// One row of the catalog list: name, type, genus, group order, each in a cell of its own.
+function catalogRow(row, entry) {
+  const cells = [entry.name, `{${entry.p},${entry.q}}`, `g ${entry.genus}`, count(entry.order)].map((text) => {
+    const cell = document.createElement('span');
+    cell.textContent = text;
+    return cell;
+  });
+  row.replaceChildren(...cells);
+}
