@@ -203,7 +203,7 @@ int catalog(const Args& args) {
   }
   if (parsed.has("--json")) {
     Json out = Json::array();
-    for (const auto& e : rows) out.push_back(Json(regmap::catalog_row_json(e)));
+    for (const auto& e : rows) out.push_back(regmap::catalog_row_json(e));
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
   }

@@ -30,7 +30,9 @@ emscripten::val to_typed_array(const std::vector<T>& values) {
       .call<emscripten::val>("slice");
 }
 
-inline emscripten::val json_to_val(const nlohmann::json& json) {
+// Any nlohmann JSON type (json, ordered_json); key order is kept.
+template <class Json>
+emscripten::val json_to_val(const Json& json) {
   return emscripten::val::global("JSON").call<emscripten::val>("parse", json.dump());
 }
 

@@ -2,9 +2,9 @@
 
 namespace tessera::regmap {
 
-nlohmann::json map_info_json(const Presentation& presentation, const MapFigures& f,
-                             double seconds) {
-  using nlohmann::json;
+nlohmann::ordered_json map_info_json(const Presentation& presentation, const MapFigures& f,
+                                     double seconds) {
+  using json = nlohmann::ordered_json;
   return {{"name", presentation.name},  {"p", presentation.p},
           {"q", presentation.q},        {"order", f.order},
           {"vertices", f.vertices},     {"edges", f.edges},
@@ -13,7 +13,7 @@ nlohmann::json map_info_json(const Presentation& presentation, const MapFigures&
           {"petrie", f.petrie},         {"seconds", seconds}};
 }
 
-nlohmann::json catalog_row_json(const CatalogEntry& e) {
+nlohmann::ordered_json catalog_row_json(const CatalogEntry& e) {
   return {{"name", e.name},
           {"genus", e.genus},
           {"p", e.p},

@@ -12,10 +12,10 @@ namespace tessera::regmap {
 
 // name, p, q, order, vertices, edges, faces, genus (null when non-orientable), orientable, euler,
 // petrie, seconds (the enumeration's).
-nlohmann::json map_info_json(const Presentation& presentation, const MapFigures& figures,
-                             double seconds);
+nlohmann::ordered_json map_info_json(const Presentation& presentation, const MapFigures& figures,
+                                     double seconds);
 
 // name, genus, p, q, petrie, order, vertices, edges, faces.
-nlohmann::json catalog_row_json(const CatalogEntry& entry);
+nlohmann::ordered_json catalog_row_json(const CatalogEntry& entry);
 
 }  // namespace tessera::regmap
