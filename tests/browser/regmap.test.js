@@ -172,6 +172,28 @@ test('Regular maps: the tiling zooms, pans, fits and downloads as SVG', async ({
   assert.match(svg, /<title>R2\.4<\/title>/);
 });
 
+test('Regular maps: a typed map too large to draw shows its figures and is kept for download', async ({ page, url }) => {
+  await openMap(page, url);
+  await runPresentation(page, presentation('Torus50', '4,4', [...TRIANGLE_RELATORS, 'R^4', 'S^4', '(R * S^-1)^50']));
+  await mapShown(page, 'Torus50 (typed presentation)');
+  assert.deepEqual(await figures(page, ['order', 'genus', 'triangles']), ['20,000', '1', '20,000']);
+  const note = page.locator('#tiling-view [data-role=note]');
+  assert.match(await note.textContent(), /20,000 triangles, more than the page draws \(16,000\)/);
+  assert.ok(await page.locator('#tiling-view img').isHidden(), 'the previous tiling still shows');
+  assert.ok(await page.getByRole('button', { name: 'Zoom in' }).isDisabled());
+  await page.screenshot({ path: `${RESULTS}/regmap-too-large.png` });
+  const [download] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download SVG' }).click()]);
+  assert.equal(download.suggestedFilename(), 'Torus50.svg');
+  const path = `${RESULTS}/Torus50.svg`;
+  await download.saveAs(path);
+  assert.match(await readFile(path, 'utf8'), /<title>Torus50<\/title>/);
+
+  await page.getByRole('option', { name: /^R2\.4\b/ }).click();
+  await mapShown(page, 'R2.4');
+  assert.ok(await note.isHidden(), 'the note stays over a drawn tiling');
+  await assertTilingDrawn(page, 'R2.4 after a large map');
+});
+
 test('Regular maps: Cancel stops a long enumeration and the next map is shown', async ({ page, url }) => {
   await openMap(page, url);
   // A torus map of order 720,000: its enumeration runs for seconds (and ends at the time limit).

@@ -7,6 +7,9 @@ import { VirtualList } from './virtual-list.js';
 const DEFAULT_MAP = 'R3.1'; // Klein's quartic
 const ROW_HEIGHT = 24; // CSS pixels, as .catalog-list [role=option] in style.css
 const SEARCH_FIELDS = ['name', 'genus', 'type'];
+// The catalog's largest tiling has 8,064 triangles. The browser draws an SVG image on the page's
+// thread: one of 16,000 triangles holds the page for about a second, larger ones only download.
+const MAX_DRAWN_TRIANGLES = 16_000;
 
 /**
  * The Regular maps mode: the catalog with its search, a map's figures and its tiling, and maps
@@ -74,7 +77,7 @@ export class RegularMapMode {
   async show(result, name) {
     const title = name ?? `${result.info.name || 'A map'} (typed presentation)`;
     try {
-      await this.view.show(result.svg, name ?? result.info.name);
+      await this.drawTiling(result, name ?? result.info.name);
     } catch (error) {
       this.status.showError(error);
       return;
@@ -87,6 +90,16 @@ export class RegularMapMode {
     if (name !== null) dual.textContent = `Show its dual, ${dualName(name)}`;
     this.list.setChosen(name);
     this.onStateChange({ map: name });
+  }
+
+  drawTiling({ svg, polygon }, name) {
+    if (polygon.triangles <= MAX_DRAWN_TRIANGLES) return this.view.show(svg, name);
+    return this.view.showUndrawn(
+      svg,
+      name,
+      `This tiling has ${count(polygon.triangles)} triangles, more than the page draws ` +
+        `(${count(MAX_DRAWN_TRIANGLES)}) without holding up. Download the SVG to see it.`,
+    );
   }
 
   search() {

@@ -26,13 +26,13 @@ export function zoomAbout(view, factor, px, py, fitScale) {
   return { scale, x: px - (px - view.x) * ratio, y: py - (py - view.y) * ratio };
 }
 
-/** root: the element holding [data-role=stage|image|zoom-in|zoom-out|fit|download-svg]. */
+/** root: the element holding [data-role=stage|image|note|zoom-in|zoom-out|fit|download-svg]. */
 export class TilingView {
   constructor(root) {
     this.part = (role) => root.querySelector(`[data-role=${role}]`);
     this.stage = this.part('stage');
     this.image = this.part('image');
-    this.shown = null; // { svg, name, url, width, height } of the image on screen
+    this.shown = null; // { svg, name, url, width, height } of the image on screen (url null: not drawn)
     this.view = { scale: 1, x: 0, y: 0 };
     this.fitted = true; // the user has not zoomed or panned since the last fit
     this.request = 0;
@@ -45,7 +45,8 @@ export class TilingView {
     this.stage.addEventListener('keydown', (event) => this.onKey(event));
     this.stage.addEventListener('pointerdown', (event) => this.startDrag(event));
     new ResizeObserver(() => this.fitted && this.fit()).observe(this.stage);
-    this.setEnabled(false);
+    this.setDrawn(false);
+    this.part('download-svg').disabled = true;
   }
 
   /**
@@ -67,17 +68,36 @@ export class TilingView {
       URL.revokeObjectURL(url);
       return;
     }
-    if (this.shown) URL.revokeObjectURL(this.shown.url);
-    this.shown = { svg, name, url, width: image.naturalWidth || 1000, height: image.naturalHeight || 1000 };
-    this.image.src = url;
-    this.image.alt = `The tiling of the regular map ${name}: its fundamental polygon with the paired boundary edges numbered.`;
-    this.setEnabled(true);
+    this.keep({ svg, name, url, width: image.naturalWidth || 1000, height: image.naturalHeight || 1000 });
+    // The decoded image itself takes the place of the one on screen: decoding an SVG parses it on
+    // the page's thread, once is enough.
+    image.dataset.role = 'image';
+    image.draggable = false;
+    image.alt = `The tiling of the regular map ${name}: its fundamental polygon with the paired boundary edges numbered.`;
+    this.image.replaceWith(image);
+    this.image = image;
+    this.setDrawn(true);
     this.fit();
   }
 
-  setEnabled(enabled) {
-    for (const role of ['zoom-in', 'zoom-out', 'fit', 'download-svg']) this.part(role).disabled = !enabled;
-    this.image.hidden = !enabled;
+  /** Keeps an SVG for its download without drawing it, and shows `note` (text) in its place. */
+  showUndrawn(svg, name, note) {
+    this.request++;
+    this.keep({ svg, name, url: null });
+    this.part('note').textContent = note;
+    this.setDrawn(false);
+  }
+
+  keep(shown) {
+    if (this.shown?.url) URL.revokeObjectURL(this.shown.url);
+    this.shown = shown;
+    this.part('download-svg').disabled = false;
+  }
+
+  setDrawn(drawn) {
+    for (const role of ['zoom-in', 'zoom-out', 'fit']) this.part(role).disabled = !drawn;
+    this.image.hidden = !drawn;
+    this.part('note').hidden = drawn || !this.shown;
   }
 
   download() {
@@ -85,19 +105,22 @@ export class TilingView {
     if (this.shown) downloadBytes(this.shown.svg, downloadName(`${this.shown.name}.svg`, 'svg'), 'image/svg+xml');
   }
 
+  get drawn() {
+    return Boolean(this.shown?.url);
+  }
+
   fitScale() {
-    if (!this.shown) return 1;
     return fitView(this.stage.clientWidth, this.stage.clientHeight, this.shown.width, this.shown.height).scale;
   }
 
   fit() {
-    if (!this.shown) return;
+    if (!this.drawn) return;
     this.fitted = true;
     this.apply(fitView(this.stage.clientWidth, this.stage.clientHeight, this.shown.width, this.shown.height));
   }
 
   zoomAt(factor, px, py) {
-    if (!this.shown) return;
+    if (!this.drawn) return;
     this.fitted = false;
     this.apply(zoomAbout(this.view, factor, px, py, this.fitScale()));
   }
@@ -107,7 +130,7 @@ export class TilingView {
   }
 
   panBy(dx, dy) {
-    if (!this.shown) return;
+    if (!this.drawn) return;
     this.fitted = false;
     this.apply({ ...this.view, x: this.view.x + dx, y: this.view.y + dy });
   }
@@ -145,7 +168,7 @@ export class TilingView {
   }
 
   startDrag(event) {
-    if (event.button !== 0 || !this.shown) return;
+    if (event.button !== 0 || !this.drawn) return;
     this.stage.setPointerCapture(event.pointerId);
     let last = { x: event.clientX, y: event.clientY };
     const move = (moveEvent) => {
