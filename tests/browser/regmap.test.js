@@ -8,6 +8,7 @@ import { dropFiles, idle, mapFigure, mapShown, message, openMap, openPage, tilin
 const figures = (page, keys) => Promise.all(keys.map((key) => mapFigure(page, key)));
 const presentation = (name, type, relators) => `${name} : Type {${type}}\n[ ${relators.join(', ')} ]`;
 const TRIANGLE_RELATORS = ['T^2', '(R * S)^2', '(R * T)^2', '(S * T)^2'];
+const searchField = (page, label) => page.getByLabel(label, { exact: true });
 
 async function runPresentation(page, text) {
   await page.getByLabel("A map's group in Conder's text format").fill(text);
@@ -35,8 +36,8 @@ test('Regular maps: a link to R3.1 shows its figures and its tiling', async ({ p
 
 test('Regular maps: R2.4 found by search, its link reopens it in a fresh page', async ({ page, url, context }) => {
   await openMap(page, url);
-  await page.getByLabel('Genus').fill('2');
-  await page.getByLabel('Type').fill('{5,10}');
+  await searchField(page, 'Genus').fill('2');
+  await searchField(page, 'Type').fill('{5,10}');
   const list = page.getByRole('listbox', { name: 'Maps of the catalog' });
   await list.getByRole('option', { name: /^R2\.4\b/ }).click();
   await mapShown(page, 'R2.4');
@@ -56,6 +57,12 @@ test('Regular maps: R2.4 found by search, its link reopens it in a fresh page', 
   await mapShown(fresh, "R2.4'");
   assert.deepEqual(await figures(fresh, ['type', 'vertices', 'faces']), ['{10,5}', '2', '1']);
   assert.equal(new URL(fresh.url()).hash, '#mode=regmap&map=R2.4%27');
+
+  await fresh.evaluate(() => {
+    location.hash = '#mode=regmap&map=R2.1';
+  });
+  await mapShown(fresh, 'R2.1');
+  assert.equal(await mapFigure(fresh, 'order'), '96');
 });
 
 test('Regular maps: the catalog list stays small in the page and is searchable from the keyboard', async ({ page, url }) => {
@@ -70,15 +77,15 @@ test('Regular maps: the catalog list stays small in the page and is searchable f
   });
   await list.getByRole('option', { name: /^R101\.56\b/ }).waitFor();
 
-  await page.getByLabel('Type').fill('7,3'); // p > q: the duals
+  await searchField(page, 'Type').fill('7,3'); // p > q: the duals
   assert.match(await count.textContent(), /^\d+ of 3,378 maps$/);
   await list.getByRole('option', { name: /^R3\.1'/ }).waitFor();
-  await page.getByLabel('Type').fill('');
-  await page.getByLabel('Genus').fill('two');
-  assert.equal(await page.getByLabel('Genus').getAttribute('aria-invalid'), 'true');
+  await searchField(page, 'Type').fill('');
+  await searchField(page, 'Genus').fill('two');
+  assert.equal(await searchField(page, 'Genus').getAttribute('aria-invalid'), 'true');
   assert.match(await count.textContent(), /^Genus: a number \(3\) or a range \(2-10\)\./);
-  await page.getByLabel('Genus').fill('3-4');
-  await page.getByLabel('Name').fill('R4.');
+  await searchField(page, 'Genus').fill('3-4');
+  await searchField(page, 'Name').fill('R4.');
   assert.match(await count.textContent(), /^\d+ of 3,378 maps$/);
   const names = await list.getByRole('option').evaluateAll((rows) => rows.map((row) => row.firstChild.textContent));
   assert.ok(names.length > 0 && names.every((name) => name.startsWith('R4.')), names.join(' '));
@@ -162,6 +169,13 @@ test('Regular maps: the tiling zooms, pans, fits and downloads as SVG', async ({
   assert.ok((await box()).width > zoomed.width, 'the wheel did not zoom in');
   await page.getByRole('button', { name: 'Fit' }).click();
   assert.deepEqual(await box(), fitted);
+  await stage.focus();
+  await page.keyboard.press('+');
+  await page.keyboard.press('ArrowLeft');
+  const keyed = await box();
+  assert.ok(keyed.width > 1.4 * fitted.width, 'the + key did not zoom in');
+  await page.keyboard.press('0');
+  assert.deepEqual(await box(), fitted);
 
   const [download] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download SVG' }).click()]);
   assert.equal(download.suggestedFilename(), 'R2.4.svg');
@@ -206,7 +220,7 @@ test('Regular maps: Cancel stops a long enumeration and the next map is shown', 
   assert.ok(Date.now() - cancelled < 2000, 'Cancel took longer than 2 s');
   assert.ok(await page.locator('[data-role=progress]').isHidden());
   assert.equal(await page.locator('[data-role=map-name]').textContent(), 'R3.1', 'the map on screen was lost');
-  await page.getByLabel('Name').fill('R2.4');
+  await searchField(page, 'Name').fill('R2.4');
   await page.getByRole('option', { name: /^R2\.4\b/ }).click();
   await mapShown(page, 'R2.4');
   assert.equal(await mapFigure(page, 'order'), '20');
@@ -229,4 +243,18 @@ test('Regular maps: the tabs switch modes, each keeps what it shows, a dropped m
   await page.locator('[data-role=mesh-name]').filter({ hasText: 'triangle' }).waitFor();
   await idle(page);
   assert.equal(await page.getByRole('tab', { name: 'Quad layout' }).getAttribute('aria-selected'), 'true');
+});
+
+test('Regular maps: a core that cannot be loaded is reported, and the catalog loads when the mode is shown again', async ({ page, url }) => {
+  await page.route('**/wasm/tessera.mjs', (route) => route.abort());
+  await page.goto(`${url}#mode=regmap&map=R2.4`);
+  const alert = page.getByRole('alert');
+  await alert.waitFor();
+  assert.match(await alert.textContent(), /geometry core .* could not be started/);
+  await page.unroute('**/wasm/tessera.mjs');
+  await page.getByRole('tab', { name: 'Quad layout' }).click();
+  await page.locator('[data-role=mesh-name]').filter({ hasText: 'genus2' }).waitFor();
+  await page.getByRole('tab', { name: 'Regular maps' }).click();
+  await mapShown(page, 'R2.4');
+  assert.equal(await page.locator('[data-role=catalog-count]').textContent(), '3,378 of 3,378 maps');
 });

@@ -47,9 +47,13 @@ export class RegularMapMode {
     await this.applyState(state);
   }
 
-  /** Shows the map a link names; without a valid one, keeps the map on screen (or the default). */
-  async applyState({ map }) {
-    if (!this.rows) return;
+  /**
+   * Shows the map a link names; without a valid one, keeps the map on screen (or the default).
+   * Reads the catalog first if an earlier attempt failed.
+   */
+  async applyState(state) {
+    if (!this.rows) return this.start(state);
+    const { map } = state;
     const known = map !== null && findMap(this.rows, map) !== undefined;
     if (known && map !== this.shown?.name) await this.showMap(map);
     if (!known && !this.shown) await this.showMap(DEFAULT_MAP);
@@ -130,7 +134,8 @@ const dualName = (name) => (name.endsWith("'") ? name.slice(0, -1) : `${name}'`)
 
 // One row of the catalog list: name, type, genus, group order, each in a cell of its own.
 function catalogRow(row, entry) {
-  const cells = [entry.name, `{${entry.p},${entry.q}}`, `g ${entry.genus}`, count(entry.order)].map((text) => {
+  row.setAttribute('aria-label', `${entry.name}, type {${entry.p},${entry.q}}, genus ${entry.genus}, |G| ${count(entry.order)}`);
+  const cells = [entry.name, `{${entry.p},${entry.q}}`, String(entry.genus), count(entry.order)].map((text) => {
     const cell = document.createElement('span');
     cell.textContent = text;
     return cell;
