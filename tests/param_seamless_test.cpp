@@ -153,14 +153,6 @@ TEST(SeamlessParam, ParameterUnitIsH) {
   EXPECT_LT(r.param.energy, 0.1);
 }
 
-TEST(SeamlessParam, InjectivityConstraintsRepairFlips) {
-  // A coarse double torus flips triangles in the unconstrained solve.
-  const Parameterized r = parameterize(double_torus(1));
-  EXPECT_GT(r.param.injectivity.programs, 0u);
-  EXPECT_LE(r.param.flipped_triangles, r.param.flipped_before_injectivity);
-  expect_valid(r);
-}
-
 TEST(SeamlessParam, ReportsStepTimes) {
   const Parameterized r = parameterize(icosphere(2));
   ASSERT_EQ(r.param.seconds.size(), 4u);

@@ -217,6 +217,20 @@ bool solve_program(const PoissonProblem& p, const RowMajor& rows, const std::vec
   return solved;
 }
 
+// Whether face f breaks one of (6.2), (6.3) with the margin.
+bool violates_bisectors(const PoissonProblem& p, const Eigen::VectorXd& x, Index f, double margin) {
+  Eigen::Vector2d grad_u = Eigen::Vector2d::Zero();
+  Eigen::Vector2d grad_v = Eigen::Vector2d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    grad_u += p.h * x[2 * p.wedge[f][i]] * p.gradient[f][i];
+    grad_v += p.h * x[2 * p.wedge[f][i] + 1] * p.gradient[f][i];
+  }
+  const Eigen::Vector2d u = p.frame_u[f];
+  const Eigen::Vector2d v(-u.y(), u.x());
+  return std::min({grad_u.dot(u + v), grad_u.dot(u - v), grad_v.dot(u + v), grad_v.dot(v - u)}) <
+         margin;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> flipped_faces(const PoissonProblem& p, const Eigen::VectorXd& x) {
@@ -250,25 +264,33 @@ InjectivityReport enforce_bisector_constraints(const Mesh& mesh, const PoissonPr
 
   for (int round = 0; round < options.rounds; ++round) {
     progress.step("injectivity", static_cast<double>(round) / options.rounds);
-    std::vector<std::uint8_t> constrained = flipped_faces(p, basis * y);
+    const Eigen::VectorXd x = basis * y;
+    std::vector<std::uint8_t> constrained = flipped_faces(p, x);
+    // Later rounds only chase flips: a ring triangle that one program could not bring within the
+    // bisectors will not get there with more room either.
     if (round == 0)
-      for (Index f = 0; f < constrained.size(); ++f) constrained[f] |= singular_ring[f];
+      for (Index f = 0; f < constrained.size(); ++f)
+        constrained[f] |= singular_ring[f] && violates_bisectors(p, x, f, options.margin);
     const auto count =
         static_cast<std::size_t>(std::count(constrained.begin(), constrained.end(), 1));
     if (count == 0) break;
     ++report.rounds;
     report.constrained_faces += count;
 
-    // Unknowns whose wedges all lie inside the grown region are freed.
+    // Unknowns that move a triangle of the grown region, and not too many triangles, are freed:
+    // wedge positions, and the translations of short cut arcs between close singularities.
     const std::vector<std::uint8_t> region =
-        grow_rings(mesh, vertex_to_faces, std::move(constrained), round + 1);
+        grow_rings(mesh, vertex_to_faces, std::move(constrained), round);
     std::vector<std::uint8_t> movable(static_cast<std::size_t>(basis.cols()), 0);
     for (Index j = 0; j < movable.size(); ++j) {
-      const auto wedges = column_to_wedges.of(j);
-      movable[j] = std::all_of(wedges.begin(), wedges.end(), [&](Index w) {
-        const auto faces = wedge_to_faces.of(w);
-        return std::all_of(faces.begin(), faces.end(), [&](Index f) { return region[f] != 0; });
-      });
+      std::size_t moved = 0;
+      bool touches = false;
+      for (Index w : column_to_wedges.of(j))
+        for (Index f : wedge_to_faces.of(w)) {
+          ++moved;
+          touches |= region[f] != 0;
+        }
+      movable[j] = touches && moved <= (options.column_faces << (2 * round));
     }
     // Unknowns that share a face belong to one program.
     std::vector<Index> parent(movable.size());

@@ -4,9 +4,12 @@
 //   <h grad v, u_T + v_T> >= m,  <h grad v, v_T - u_T> >= m,
 // with a margin m > 0 for the strict inequalities; then (grad u, grad v) keeps the frame's
 // orientation and the triangle is not flipped. The thesis constrains the triangles around the
-// singularities; here those and every flipped triangle are constrained, in rounds. A round frees
-// the unknowns whose wedges lie within a few vertex rings of the constrained triangles (the ring
-// count grows by one per round), holds everything else, and solves with GLPK the linear program
+// singularities; here those that break the constraints and every flipped triangle are
+// constrained, in rounds (the others already satisfy them and are left alone). A round frees
+// the unknowns that move a triangle within a few vertex rings of the constrained triangles (the
+// ring count grows by one per round, and so does the number of triangles an unknown may move:
+// wedges first, then translations of short cut arcs), holds everything else, and solves with
+// GLPK the linear program
 //   minimize  sum_T (A_T / mean area) |h grad(u, v) - (u_T, v_T)|_1  +  W sum slack
 // subject to the bisector constraints, each with a slack (so the program is always feasible), on
 // every triangle those unknowns touch. Unknowns that share no triangle form separate programs.
@@ -34,6 +37,9 @@ struct InjectivityOptions {
   // Larger programs are skipped (their triangles keep their values): widespread flips mean the
   // field does not suit the surface, and the simplex method would take minutes.
   std::size_t max_program_faces = 5000;
+  // An unknown moving more triangles than this (times 4 per round) is held: the first round moves
+  // wedges only, later ones also the translations of short cut arcs, never those of long arcs.
+  std::size_t column_faces = 16;
 };
 
 struct InjectivityReport {
