@@ -18,10 +18,17 @@ namespace tessera::wasm {
   error.throw_();
 }
 
+// The core names the command-line option that raises a limit; the page cannot take options.
+inline constexpr const char* kPageLimitNote =
+    ". In the browser the limits are fixed so that the tab stays alive; the tessera command line "
+    "takes the option to raise them.";
+
 template <class F>
 emscripten::val guard(F&& body) {
   try {
     return body();
+  } catch (const LimitError& e) {
+    throw_js_error(std::string(e.what()) + kPageLimitNote, e.kind());
   } catch (const Error& e) {
     throw_js_error(e.what(), e.kind());
   } catch (const std::bad_alloc&) {

@@ -2,7 +2,15 @@
 
 #include "base/error.h"
 
+#include <cstdio>
+
 namespace tessera {
+
+std::string format_seconds(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g s", seconds);
+  return text;
+}
 
 void check_limit(std::uint64_t value, std::uint64_t limit, const std::string& what,
                  const std::string& flag) {

@@ -17,6 +17,9 @@ struct Limits {
   std::size_t max_tiling_triangles = 250'000;  // --max-triangles (Tri(G) of a regular map)
 };
 
+// "10 s", "0.5 s": a time limit as people write it.
+std::string format_seconds(double seconds);
+
 // Throws LimitError("<what> has <value>, above the limit <limit> (<flag>) ...") if value > limit.
 // 64-bit on every target, so that a count announced by a file is not truncated in wasm32 first.
 void check_limit(std::uint64_t value, std::uint64_t limit, const std::string& what,

@@ -166,7 +166,7 @@ class Enumerator {
   void check_clock() {
     if (elapsed() > limits_.max_coset_seconds)
       throw LimitError("coset enumeration ran longer than " +
-                       std::to_string(limits_.max_coset_seconds) + " s with " +
+                       format_seconds(limits_.max_coset_seconds) + " with " +
                        std::to_string(rows_ - dead_) +
                        " cosets and still growing (the group may be infinite: check the "
                        "relators); raise the limit with --max-seconds");
