@@ -266,11 +266,15 @@ InjectivityReport enforce_bisector_constraints(const Mesh& mesh, const PoissonPr
     progress.step("injectivity", static_cast<double>(round) / options.rounds);
     const Eigen::VectorXd x = basis * y;
     std::vector<std::uint8_t> constrained = flipped_faces(p, x);
-    // Later rounds only chase flips: a ring triangle that one program could not bring within the
-    // bisectors will not get there with more room either.
-    if (round == 0)
-      for (Index f = 0; f < constrained.size(); ++f)
+    // Round 0 adds the ring triangles outside the bisectors; the next rounds retry the flipped
+    // triangles, the last ones only those away from singularities (a ring triangle that bigger
+    // programs could not unflip rarely gets there with more room, at a high price).
+    for (Index f = 0; f < constrained.size(); ++f) {
+      if (round == 0)
         constrained[f] |= singular_ring[f] && violates_bisectors(p, x, f, options.margin);
+      else if (round >= options.ring_rounds)
+        constrained[f] &= !singular_ring[f];
+    }
     const auto count =
         static_cast<std::size_t>(std::count(constrained.begin(), constrained.end(), 1));
     if (count == 0) break;
@@ -290,7 +294,7 @@ InjectivityReport enforce_bisector_constraints(const Mesh& mesh, const PoissonPr
           ++moved;
           touches |= region[f] != 0;
         }
-      movable[j] = touches && moved <= (options.column_faces << (2 * round));
+      movable[j] = touches && moved <= (options.column_faces << (2 * std::min(round, 2)));
     }
     // Unknowns that share a face belong to one program.
     std::vector<Index> parent(movable.size());

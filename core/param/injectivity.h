@@ -5,10 +5,13 @@
 // with a margin m > 0 for the strict inequalities; then (grad u, grad v) keeps the frame's
 // orientation and the triangle is not flipped. The thesis constrains the triangles around the
 // singularities; here those that break the constraints and every flipped triangle are
-// constrained, in rounds (the others already satisfy them and are left alone). A round frees
+// constrained (the others already satisfy them and are left alone); later rounds retry the
+// triangles still flipped, the last ones only those away from the singularities' one-rings. A
+// round frees
 // the unknowns that move a triangle within a few vertex rings of the constrained triangles (the
-// ring count grows by one per round, and so does the number of triangles an unknown may move:
-// wedges first, then translations of short cut arcs), holds everything else, and solves with
+// ring count grows by one per round, and for two rounds so does the number of triangles an
+// unknown may move: wedges first, then translations of short cut arcs), holds everything else,
+// and solves with
 // GLPK the linear program
 //   minimize  sum_T (A_T / mean area) |h grad(u, v) - (u_T, v_T)|_1  +  W sum slack
 // subject to the bisector constraints, each with a slack (so the program is always feasible), on
@@ -31,14 +34,16 @@
 namespace tessera {
 
 struct InjectivityOptions {
-  int rounds = 3;
+  int rounds = 5;
+  int ring_rounds = 3;          // rounds that also retry flipped triangles around singularities
   double margin = 0.1;          // m, relative to the unit frame
   double slack_weight = 100.0;  // W
   // Larger programs are skipped (their triangles keep their values): widespread flips mean the
   // field does not suit the surface, and the simplex method would take minutes.
   std::size_t max_program_faces = 5000;
-  // An unknown moving more triangles than this (times 4 per round) is held: the first round moves
-  // wedges only, later ones also the translations of short cut arcs, never those of long arcs.
+  // An unknown moving more triangles than this (times 4 per round, up to 16 times) is held: the
+  // first round moves wedges only, later ones also the translations of short cut arcs, never
+  // those of long arcs.
   std::size_t column_faces = 16;
 };
 
