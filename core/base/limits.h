@@ -15,6 +15,8 @@ struct Limits {
   std::size_t max_coset_table = 4'000'000;     // --max-cosets (rows of a coset table)
   double max_coset_seconds = 20.0;             // --max-seconds (coset enumeration)
   std::size_t max_tiling_triangles = 250'000;  // --max-triangles (Tri(G) of a regular map)
+  std::size_t max_trace_steps = 20'000'000;    // --max-trace-steps (faces crossed by all
+                                               //   separatrices of a quad layout)
 };
 
 // "10 s", "0.5 s": a time limit as people write it.

@@ -1,0 +1,24 @@
+// The illegal crossings I (thesis Sec. 4.6, Algorithm 1, Remarks 4.1 and 4.2). At every point m of
+// K, the intersection of gamma_a and gamma_b (possibly one self-crossing separatrix, Remark 4.1),
+// the parameter chart around m is a common local frame: every edge whose triangle has a side on a
+// (on b) is laid out in it by walking along a (along b) from m, its hypotenuse a segment there. Two
+// edges with the same alignment (bases parallel) whose hypotenuses cross are an illegal pair;
+// differently aligned crossings are legal. Illegality in one frame suffices. The zero-area pairs Z
+// of case 3 are added.
+//
+// Only pairs with one edge on a and the other on b are tested: two edges on the same line either
+// share a port (never matched together), are differently aligned, or lie on opposite sides of it.
+//
+// In:  the grown PortGraph. Out: I union Z, sorted, without pairs of edges sharing a node.
+#pragma once
+
+#include <vector>
+
+#include "base/progress.h"
+#include "layout/port_graph.h"
+
+namespace tessera::layout {
+
+std::vector<EdgePair> illegal_crossings(const PortGraph& graph, const Progress& progress);
+
+}  // namespace tessera::layout

@@ -1,0 +1,86 @@
+// Motorcycle growing (thesis Sec. 4.1, 6.7, 6.8; LAYOUT_NOTES "Growing and events"): every open
+// separatrix grows from its port at unit parametric speed, the one with the smallest length one
+// face at a time. Each face keeps the pieces of separatrices crossing it (Sec. 6.9 "Data
+// structure"); a new piece is tested against them, which finds every intersection once. An
+// intersection of a and b at m happens at time max(L_a(m), L_b(m)); events (intersections,
+// separatrix ends) are handled in time order once every growing separatrix has passed their time,
+// so that when a candidate edge is examined every singularity that could spoil its triangle has
+// been seen (Prop. 4.1). A separatrix stops at L_max, when the spiral test stops it, at a
+// singularity or at the boundary.
+//
+// In:  the charts of M_f and its ports. Out: the PortGraph without conflicts (conflicts.h adds I).
+// grow() may be called again with a larger L_max (Sec. 5.1, when G has no perfect matching): the
+// separatrices stopped by L_max continue, everything found so far stays.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <queue>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "base/limits.h"
+#include "base/progress.h"
+#include "layout/candidates.h"
+#include "layout/port_graph.h"
+#include "layout/trace.h"
+
+namespace tessera::layout {
+
+struct GrowthOptions {
+  double rho = 10;                                   // spiral test threshold (Sec. 6.8)
+  std::size_t max_steps = Limits{}.max_trace_steps;  // faces entered by all separatrices
+};
+
+class SeparatrixGrowth {
+ public:
+  SeparatrixGrowth(const Charts& charts, Ports ports, const GrowthOptions& options);
+
+  // Grows every separatrix not yet stopped to `length_limit`. Throws LimitError when the steps of
+  // all separatrices exceed options.max_steps, CancelledError when cancelled.
+  void grow(double length_limit, const Progress& progress);
+
+  const PortGraph& graph() const { return graph_; }
+  PortGraph take_graph() { return std::move(graph_); }
+
+ private:
+  struct Event {
+    double time = 0;
+    int kind = 0;  // 0: a separatrix end, 1: a crossing
+    Index index = 0;
+    bool operator>(const Event& o) const {
+      return std::tie(time, kind, index) > std::tie(o.time, o.kind, o.index);
+    }
+  };
+  struct PendingEnd {
+    Index line = 0;
+    Index port_hit = kNoIndex;  // LineEnd::singularity: the port it arrives along
+    Index face = kNoIndex;      // LineEnd::boundary: the exit point
+    Eigen::Vector2d point = Eigen::Vector2d::Zero();
+  };
+
+  void advance(Index line, double length_limit);
+  Index port_arriving(const LineCursor& cursor, Index vertex) const;
+  void queue_end(const PendingEnd& end, double time);
+  void add_piece(const SeparatrixPiece& piece);
+  void discover(const SeparatrixPiece& a, const SeparatrixPiece& b);
+  bool is_new(const Crossing& m);
+  void handle_events_until(double time);
+  void handle(const Event& event);
+  void stop(Index line, double time);
+
+  Charts charts_;
+  GrowthOptions options_;
+  PortGraph graph_;
+  EdgeCollector collector_;
+  std::vector<LineCursor> cursors_;
+  std::vector<std::vector<Index>> face_pieces_;
+  std::vector<Crossing> pending_crossings_;
+  std::vector<PendingEnd> pending_ends_;
+  std::map<std::pair<Index, Index>, std::vector<std::pair<double, double>>> found_;
+  std::priority_queue<Event, std::vector<Event>, std::greater<>> events_;
+  std::size_t steps_ = 0;
+};
+
+}  // namespace tessera::layout

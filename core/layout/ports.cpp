@@ -1,0 +1,178 @@
+#include "layout/ports.h"
+
+#include <cmath>
+#include <numbers>
+#include "layout/trace.h"
+
+namespace tessera::layout {
+namespace {
+
+constexpr double kQuarter = std::numbers::pi / 2;
+constexpr double kAngleTolerance = 1e-9;
+
+double angle_between(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::atan2(cross(a, b), a.dot(b));
+}
+
+Eigen::Vector2d first_edge(const Charts& charts, Index corner) {
+  return charts.uv(charts.connectivity.next[corner]) - charts.uv(corner);
+}
+
+Eigen::Vector2d nearest_axis(const Eigen::Vector2d& d) {
+  if (std::abs(d.x()) >= std::abs(d.y())) return {d.x() >= 0 ? 1.0 : -1.0, 0.0};
+  return {0.0, d.y() >= 0 ? 1.0 : -1.0};
+}
+
+// Brings an angle of an interior vertex's cone into [start of the ring, start + cone).
+double into_cone(const VertexRing& ring, double angle) {
+  if (ring.boundary || ring.corners.empty() || !(ring.total > 0)) return angle;
+  const double low = ring.corners.front().start - kAngleTolerance;
+  return angle - std::floor((angle - low) / ring.total) * ring.total;
+}
+
+bool contains_at(const Charts& charts, const VertexRing& ring, std::size_t k, double angle,
+                 bool axis) {
+  if (k >= ring.corners.size()) return false;
+  Eigen::Vector2d d = direction_in_corner(charts, ring, k, angle);
+  if (axis) d = nearest_axis(d);
+  return corner_contains(charts, ring.corners[k].corner, d);
+}
+
+std::size_t corner_for(const Charts& charts, const VertexRing& ring, double angle, bool axis) {
+  angle = into_cone(ring, angle);
+  const std::size_t n = ring.corners.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const RingCorner& c = ring.corners[k];
+    if (!(c.angle > 0)) continue;
+    if (angle < c.start - kAngleTolerance || angle >= c.start + c.angle - kAngleTolerance) continue;
+    // At a corner's edge the orientation test decides; it may pick the neighbouring corner.
+    for (std::size_t candidate : {k, k + 1, k + n - 1}) {
+      const std::size_t j = ring.boundary ? candidate : candidate % n;
+      if (contains_at(charts, ring, j, angle, axis)) return j;
+    }
+  }
+  return n;
+}
+
+Port make_port(const Charts& charts, const SingularPoint& point, Index point_index, std::size_t k,
+               double angle) {
+  Port port;
+  port.singular_point = point_index;
+  port.number = static_cast<int>(point.ports.size());
+  port.angle = angle;
+  if (k == point.ring.corners.size()) return port;
+  port.corner = point.ring.corners[k].corner;
+  port.direction = nearest_axis(direction_in_corner(charts, point.ring, k, angle));
+  return port;
+}
+
+void add_ports(const Charts& charts, Index point_index, Ports& result) {
+  SingularPoint& point = result.points[point_index];
+  const VertexRing& ring = point.ring;
+  if (ring.corners.empty()) return;
+  const double first = ring.corners.front().start;
+  const double end = first + ring.total;
+  for (double angle = std::ceil((first - kAngleTolerance) / kQuarter) * kQuarter;
+       angle < end - kAngleTolerance; angle += kQuarter) {
+    // On the boundary the directions along the boundary edges are not ports.
+    if (ring.boundary && (angle < first + 1e-6 || angle > end - 1e-6)) continue;
+    const std::size_t k = corner_for(charts, ring, angle, true);
+    if (ring.boundary && k == ring.corners.size()) continue;
+    result.ports.push_back(make_port(charts, point, point_index, k, angle));
+    point.ports.push_back(static_cast<Index>(result.ports.size() - 1));
+  }
+}
+
+// Gives the missing full turns to the ring's first flipped corner (see vertex_ring()).
+void sweep_flipped_corner(VertexRing& ring, double cone_angle) {
+  const double missing =
+      std::round((cone_angle - ring.total) / (2 * std::numbers::pi)) * 2 * std::numbers::pi;
+  if (missing == 0) return;
+  double shift = 0;
+  for (RingCorner& corner : ring.corners) {
+    corner.start += shift;
+    if (shift == 0 && corner.angle < 0) {
+      corner.angle += missing;
+      shift = missing;
+    }
+  }
+  ring.total += shift;
+}
+
+}  // namespace
+
+VertexRing vertex_ring(const Charts& charts, Index vertex, double cone_angle) {
+  const Connectivity& c = charts.connectivity;
+  VertexRing ring;
+  ring.vertex = vertex;
+  ring.boundary = c.is_boundary_vertex(vertex);
+  double start = 0;
+  for (Index h : outgoing_halfedges(c, vertex)) {
+    if (c.is_boundary_halfedge(h)) continue;
+    const Eigen::Vector2d e1 = first_edge(charts, h);
+    const Eigen::Vector2d e2 = charts.uv(c.prev[h]) - charts.uv(h);
+    if (ring.corners.empty()) start = std::atan2(e1.y(), e1.x());
+    const double angle = angle_between(e1, e2);
+    ring.corners.push_back({h, start, angle});
+    start += angle;
+    ring.total += angle;
+  }
+  sweep_flipped_corner(ring, cone_angle);
+  return ring;
+}
+
+Eigen::Vector2d direction_in_corner(const Charts& charts, const VertexRing& ring, std::size_t k,
+                                    double angle) {
+  const RingCorner& corner = ring.corners[k];
+  const Eigen::Vector2d e1 = first_edge(charts, corner.corner).normalized();
+  const double turn = angle - corner.start;
+  return std::cos(turn) * e1 + std::sin(turn) * perp(e1);
+}
+
+double unfolded_angle(const Charts& charts, const VertexRing& ring, std::size_t k,
+                      const Eigen::Vector2d& direction) {
+  const RingCorner& corner = ring.corners[k];
+  return corner.start + angle_between(first_edge(charts, corner.corner), direction);
+}
+
+std::size_t corner_at_angle(const Charts& charts, const VertexRing& ring, double angle) {
+  return corner_for(charts, ring, angle, false);
+}
+
+Index Ports::neighbour(Index port, int step) const {
+  const Port& p = ports[port];
+  const SingularPoint& point = points[p.singular_point];
+  const int n = static_cast<int>(point.ports.size());
+  int k = p.number + step;
+  if (point.cyclic()) {
+    k = ((k % n) + n) % n;
+  } else if (k < 0 || k >= n) {
+    return kNoIndex;
+  }
+  return point.ports[k];
+}
+
+Index Ports::nearest_port(Index point_index, double angle) const {
+  const SingularPoint& point = points[point_index];
+  if (point.ports.empty()) return kNoIndex;
+  const double first = ports[point.ports.front()].angle;
+  const int n = static_cast<int>(point.ports.size());
+  int k = static_cast<int>(std::lround((into_cone(point.ring, angle) - first) / kQuarter));
+  if (point.cyclic()) return point.ports[((k % n) + n) % n];
+  if (k < 0 || k >= n) return kNoIndex;
+  return point.ports[k];
+}
+
+Ports find_ports(const Charts& charts) {
+  Ports result;
+  result.point_of_vertex.assign(charts.mesh.vertex_count(), kNoIndex);
+  for (const Singularity& s : charts.param.singularities) {
+    const Index index = static_cast<Index>(result.points.size());
+    result.point_of_vertex[s.vertex] = index;
+    result.points.push_back({vertex_ring(charts, s.vertex, s.valence * kQuarter), s.valence, {}});
+    add_ports(charts, index, result);
+  }
+  return result;
+}
+
+}  // namespace tessera::layout
