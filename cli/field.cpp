@@ -6,6 +6,7 @@
 #include "field/cross_field.h"
 #include "field_input.h"
 #include "mesh_input.h"
+#include "param/param_json.h"
 
 namespace tessera::cli {
 namespace {

@@ -64,15 +64,6 @@ Mesh triangles_of(const Mesh& mesh) {
   return triangulate(mesh);
 }
 
-nlohmann::json singularities_json(const CrossField& field) {
-  nlohmann::json list = nlohmann::json::array();
-  for (const Singularity& s : field.singularities)
-    list.push_back({{"vertex", s.vertex}, {"index", s.index}, {"valence", s.valence}});
-  return {{"euler_characteristic", field.euler_characteristic},
-          {"index_sum", field.index_sum},
-          {"singularities", std::move(list)}};
-}
-
 std::string singularities_text(const Mesh& mesh, const CrossField& field) {
   std::map<int, int> by_valence;
   for (const Singularity& s : field.singularities) ++by_valence[s.valence];

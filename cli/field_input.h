@@ -31,9 +31,6 @@ CrossField field_from_arguments(const Mesh& mesh, const Connectivity& connectivi
 // The mesh as a triangle mesh: polygons are fanned into triangles (with a note on stderr).
 Mesh triangles_of(const Mesh& mesh);
 
-// {"euler_characteristic", "index_sum", "singularities": [{"vertex", "index", "valence"}]}.
-nlohmann::json singularities_json(const CrossField& field);
-
 // "F faces, S singularities (a of valence 3, b of valence 5, ...); index sum X, Euler
 // characteristic Y: Poincare-Hopf holds" and the like.
 std::string singularities_text(const Mesh& mesh, const CrossField& field);

@@ -8,6 +8,7 @@
 #include "export/writers.h"
 #include "field_input.h"
 #include "mesh_input.h"
+#include "param/param_json.h"
 #include "param/seamless_param.h"
 
 namespace tessera::cli {
@@ -33,19 +34,6 @@ void print_param_help() {
       "%s%s\n"
       "Exit codes: 0 ok, 1 internal error, 2 bad input (the message says what and where).\n",
       kFieldInputHelp, kMeshInputHelp);
-}
-
-nlohmann::json param_json(const CrossField& field, const SeamlessParam& param) {
-  nlohmann::json json = singularities_json(field);
-  json["flipped_triangles"] = param.flipped_triangles;
-  json["flipped_outside_singular_rings"] = param.flipped_outside_singular_rings;
-  json["flipped_before_injectivity"] = param.flipped_before_injectivity;
-  json["max_seam_error"] = param.max_seam_error;
-  json["energy"] = param.energy;
-  json["h"] = param.h;
-  json["seconds"] = nlohmann::json::object();
-  for (const StepTime& t : param.seconds) json["seconds"][t.step] = t.seconds;
-  return json;
 }
 
 std::string param_text(const SeamlessParam& param) {

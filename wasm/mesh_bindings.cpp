@@ -16,6 +16,7 @@
 #include "mesh/mesh.h"
 #include "mesh/shapes.h"
 #include "mesh/validate.h"
+#include "session.h"
 #include "typed_arrays.h"
 
 namespace tessera::wasm {
@@ -50,7 +51,9 @@ const std::array<Sample, 5>& samples() {
 }
 
 // The MeshResult of the page: figures plus what the viewer draws, polygons fanned into triangles.
+// The mesh becomes the session's mesh, the input of the later stages.
 val mesh_result(const std::string& name, const Mesh& mesh, const ValidationReport& report) {
+  session().set_mesh(mesh);
   val result = val::object();
   result.set("name", name);
   result.set("info", json_to_val(to_json(mesh_info(mesh, report))));

@@ -1,0 +1,35 @@
+// What one worker keeps between requests: the mesh on screen and the products computed from it, so
+// that a late parameter reruns only the late stages (SPEC "Data flow"). Loading a mesh clears the
+// products; computing a stage clears the ones after it.
+#pragma once
+
+#include <optional>
+
+#include "field/cross_field.h"
+#include "field/face_frames.h"
+#include "mesh/connectivity.h"
+#include "mesh/mesh.h"
+#include "param/seamless_param.h"
+
+namespace tessera::wasm {
+
+struct Session {
+  // The mesh as triangles (polygons fanned in the order the viewer draws them).
+  std::optional<Mesh> mesh;
+  std::optional<Connectivity> connectivity;
+  std::optional<FaceFrames> frames;
+  std::optional<CrossField> field;
+  std::optional<SeamlessParam> param;
+
+  void set_mesh(const Mesh& shown) {
+    *this = Session();
+    mesh = triangulate(shown);
+  }
+};
+
+inline Session& session() {
+  static Session the_session;
+  return the_session;
+}
+
+}  // namespace tessera::wasm
