@@ -1,4 +1,4 @@
-// `tessera regmap info|catalog|tiling`: regular maps from Conder's census (thesis Ch. 9).
+// `tessera regmap info|catalog|tiling|surface`: regular maps from Conder's census (thesis Ch. 9).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +15,8 @@
 #include "regmap/conder_format.h"
 #include "regmap/finite_group.h"
 #include "regmap/map_json.h"
+#include "regmap/regular_surface.h"
+#include "regmap/surface_export.h"
 #include "regmap/tiling_svg.h"
 #include "regmap/triangle_tiling.h"
 #include "usage.h"
@@ -37,6 +39,7 @@ constexpr const char* kRegmapHelp =
     "  info <map>      |G|, V, E, F, genus, type, Petrie length and the time it took\n"
     "  catalog         list the shipped maps, filtered by genus or type\n"
     "  tiling <map>    draw the map's fundamental polygon Tri(G) with its boundary pairs as SVG\n"
+    "  surface <map>   build the map's regular surface: its edge graph tubified (GLB, PLY, OBJ)\n"
     "\n"
     "<map> is a catalog name (R3.1, or R3.1' for the dual) or a file holding one entry in "
     "Conder's\n"
@@ -77,6 +80,35 @@ constexpr const char* kTilingHelp =
     "                   polygon_edges, polygon_euler, boundary_cycles, seconds}\n"
     "  --max-triangles N  largest group drawn (default 250000)\n"
     "  --max-cosets N, --max-seconds S, --max-file-bytes N   as for 'tessera regmap info'\n";
+
+constexpr const char* kSurfaceHelp =
+    "usage: tessera regmap surface <map> [-o surface.glb|.ply|.obj] [--base platonic|relax]\n"
+    "                              [--json] [options]\n"
+    "\n"
+    "Builds the map's regular surface (thesis Sec. 9.2-9.5): its edge graph placed in space and\n"
+    "tubified, tubes for edges, junctions for vertices, holes for faces; a closed surface of "
+    "genus\n"
+    "E - V + 1 tiled by 4E quarter tubes, one per element of the map's group. Checks it: closed,\n"
+    "oriented, genus, the relations of the quarter-tube group A, B, C read off the mesh, and "
+    "counts\n"
+    "its self-intersections (intersecting triangle pairs).\n"
+    "  -o FILE          write the surface: .glb (quarter tubes coloured, per-face _TILE, figures "
+    "in\n"
+    "                   extras), .ply (integer face property 'tile'), .obj, .off, .stl\n"
+    "  --base B         platonic: the symmetric base (a double cover of a Platonic solid); relax:\n"
+    "                   the spring relaxation from the Jemisphere (Sec. 9.4). Default: platonic\n"
+    "                   when the map has a symmetric base, else relax\n"
+    "  --json           print {genus, euler_characteristic, quarter_tubes, closed, oriented,\n"
+    "                   self_intersections, relations_hold, seconds, ...}\n"
+    "  --tube-radius R  tube radius, in tube lengths (default: 0.15, thinner for q > 6)\n"
+    "  --roundness X    fillet between neighbouring tubes at a junction, in tube radii (default "
+    "1)\n"
+    "  --smoothness N   quads across a quarter tube, 2..32 (default 4)\n"
+    "  --iterations N   relaxation iterations (default 400)\n"
+    "  --no-self-intersections   skip the self-intersection count\n"
+    "  --max-faces N    largest mesh built (default 8000000)\n"
+    "  --max-triangles N, --max-cosets N, --max-seconds S, --max-file-bytes N\n"
+    "                   as for 'tessera regmap tiling'\n";
 
 bool wants_help(const Args& args) {
   for (const std::string& a : args) {
@@ -268,6 +300,93 @@ int tiling(const Args& args) {
   return 0;
 }
 
+regmap::SurfaceBase parse_base(const ParsedArgs& parsed) {
+  if (!parsed.has("--base")) return regmap::SurfaceBase::Automatic;
+  const std::string base = parsed.value("--base");
+  if (base == "platonic") return regmap::SurfaceBase::Platonic;
+  if (base == "relax") return regmap::SurfaceBase::Relax;
+  throw UsageError("--base expects platonic or relax, got '" + base + "'");
+}
+
+regmap::SurfaceOptions surface_options(const ParsedArgs& parsed) {
+  regmap::SurfaceOptions options;
+  options.base = parse_base(parsed);
+  options.tube.radius = parsed.number("--tube-radius", options.tube.radius);
+  options.tube.roundness = parsed.number("--roundness", options.tube.roundness);
+  options.tube.smoothness = static_cast<int>(
+      parsed.count("--smoothness", static_cast<std::size_t>(options.tube.smoothness)));
+  options.relax.iterations = static_cast<int>(
+      parsed.count("--iterations", static_cast<std::size_t>(options.relax.iterations)));
+  options.find_self_intersections = !parsed.has("--no-self-intersections");
+  return options;
+}
+
+// Progress on stderr: each stage at every quarter.
+Progress stderr_progress() {
+  return Progress(
+      [last = std::string(), quarter = -1](const std::string& stage, double fraction) mutable {
+        const int now = static_cast<int>(fraction * 4);
+        if (stage == last && now == quarter) return;
+        last = stage;
+        quarter = now;
+        std::fprintf(stderr, "tessera: %s %d%%\n", stage.c_str(), now * 25);
+      });
+}
+
+int surface(const Args& args) {
+  if (wants_help(args)) {
+    std::fputs(kSurfaceHelp, stdout);
+    return 0;
+  }
+  const ParsedArgs parsed = parse_args(
+      args,
+      {"-o", "--base", "--tube-radius", "--roundness", "--smoothness", "--iterations",
+       "--max-faces", "--max-triangles", "--max-cosets", "--max-seconds", "--max-file-bytes"},
+      {"--json", "--no-self-intersections"}, "regmap surface");
+  if (parsed.positional.size() != 1)
+    throw UsageError(
+        "'tessera regmap surface' takes one map (a catalog name or a file); run "
+        "'tessera regmap surface --help'");
+  Limits limits = limits_from(parsed);
+  limits.max_faces = parsed.count("--max-faces", limits.max_faces);
+  const regmap::SurfaceOptions options = surface_options(parsed);
+  const std::string output = parsed.value("-o");
+  if (!output.empty()) check_mesh_format(output);
+  const regmap::Presentation presentation = resolve_map(parsed.positional[0], limits);
+  const auto start = std::chrono::steady_clock::now();
+  const regmap::FiniteGroup group = regmap::enumerate_group(presentation, limits);
+  regmap::check_stated_figures(presentation, regmap::map_figures(group));
+  const regmap::RegularSurface result =
+      regmap::build_regular_surface(presentation, group, options, limits, stderr_progress());
+  const double seconds = seconds_since(start);
+  if (!output.empty())
+    write_file_bytes(
+        output, encode_scene(regmap::regular_surface_scene(result, presentation.name), output));
+  const regmap::SurfaceStats& s = result.stats;
+  if (parsed.has("--json")) {
+    Json out = {{"name", presentation.name}};
+    const Json stats = regmap::surface_stats_json(s);
+    for (const auto& [key, value] : stats.items()) out[key] = value;
+    out["seconds"] = seconds;  // with the enumeration
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
+  }
+  std::printf(
+      "%s: regular surface on %s, %zu junctions, %zu tubes\n"
+      "  genus %ld (V - E + F = %ld), %zu quarter tubes, %zu vertices, %zu quads\n"
+      "  closed %s, oriented %s, relations of A, B, C %s\n",
+      presentation.name.c_str(), s.base.c_str(), s.junctions, s.tubes, s.genus,
+      s.euler_characteristic, s.quarter_tubes, s.vertices, s.faces, s.closed ? "yes" : "no",
+      s.oriented ? "yes" : "no", s.relations_hold ? "hold" : "FAIL");
+  for (const std::string& failed : s.failed_relations)
+    std::printf("  relation fails: %s\n", failed.c_str());
+  if (s.self_intersections_searched)
+    std::printf("  %zu self-intersecting triangle pairs\n", s.self_intersections);
+  std::printf("  %.3f s\n", seconds);
+  if (!output.empty()) std::printf("  wrote %s\n", output.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int regmap_command(const Args& args) {
@@ -284,6 +403,7 @@ int regmap_command(const Args& args) {
   if (sub == "info") return info(rest);
   if (sub == "catalog") return catalog(rest);
   if (sub == "tiling") return tiling(rest);
+  if (sub == "surface") return surface(rest);
   throw UsageError("unknown subcommand 'regmap " + sub + "'; run 'tessera regmap --help'");
 }
 

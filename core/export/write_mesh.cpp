@@ -9,21 +9,32 @@
 
 namespace tessera {
 
+void check_mesh_format(const std::string& file_name) {
+  const std::string extension = lowercase_extension(file_name);
+  for (const char* known : {"obj", "off", "ply", "stl", "glb"})
+    if (extension == known) return;
+  throw InputError(file_name +
+                   ": cannot tell the output format from the extension; use .obj, "
+                   ".ply, .glb, .off or .stl");
+}
+
 std::vector<std::uint8_t> encode_mesh(const Mesh& mesh, const std::string& file_name,
                                       const MeshWriteOptions& options) {
+  check_mesh_format(file_name);
   const std::string extension = lowercase_extension(file_name);
   if (extension == "obj") return write_obj(mesh);
   if (extension == "off") return write_off(mesh);
   if (extension == "ply") return write_ply(mesh, options.ply_binary);
   if (extension == "stl") return write_stl(mesh);
-  if (extension == "glb") {
-    Scene scene;
-    scene.mesh = mesh;
-    return write_glb(scene);
-  }
-  throw InputError(file_name +
-                   ": cannot tell the output format from the extension; use .obj, "
-                   ".ply, .glb, .off or .stl");
+  Scene scene;
+  scene.mesh = mesh;
+  return write_glb(scene);
+}
+
+std::vector<std::uint8_t> encode_scene(const Scene& scene, const std::string& file_name,
+                                       const MeshWriteOptions& options) {
+  if (lowercase_extension(file_name) == "glb") return write_glb(scene);
+  return encode_mesh(scene.mesh, file_name, options);
 }
 
 void write_file_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes) {
