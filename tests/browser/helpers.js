@@ -55,23 +55,56 @@ export async function chooseSample(page, name) {
  * colour, from a screenshot decoded in the page itself (no image library needed here).
  */
 export async function foregroundShare(page, selector = '#viewport canvas', background = BACKGROUND_RGB) {
+  const [r, g, b] = background;
+  const test = `(R, G, B) => Math.abs(R - ${r}) + Math.abs(G - ${g}) + Math.abs(B - ${b}) > 30`;
+  const { foreground } = await pixelShares(page, { foreground: test }, selector);
+  return foreground;
+}
+
+/**
+ * The shares of an element's pixels that pass tests given as the source of (r, g, b) => boolean,
+ * by name, e.g. { red: '(r, g, b) => r - g > 100' } -> { red: 0.012 }.
+ */
+export async function pixelShares(page, tests, selector = '#viewport canvas') {
   const png = await page.locator(selector).screenshot();
+  return analyse(page, [png], tests, ([data], sources) => {
+    const checks = Object.entries(sources).map(([name, source]) => [name, new Function(`return ${source}`)()]);
+    const counts = Object.fromEntries(checks.map(([name]) => [name, 0]));
+    for (let i = 0; i < data.length; i += 4) {
+      for (const [name, check] of checks) if (check(data[i], data[i + 1], data[i + 2])) counts[name]++;
+    }
+    return Object.fromEntries(Object.entries(counts).map(([name, n]) => [name, n / (data.length / 4)]));
+  });
+}
+
+/** The share of pixels that differ (by more than 60 in R + G + B) between two screenshots (PNG). */
+export async function changedShare(page, before, after) {
+  return analyse(page, [before, after], null, ([a, b]) => {
+    if (a.length !== b.length) return 1;
+    let changed = 0;
+    for (let i = 0; i < a.length; i += 4) {
+      if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 60) changed++;
+    }
+    return changed / (a.length / 4);
+  });
+}
+
+// Decodes PNG screenshots in the page and runs analysis(rgbaArrays, arg) there (it travels as
+// source text, so it may use only its arguments).
+function analyse(page, pngs, arg, analysis) {
   return page.evaluate(
-    async ({ base64, background }) => {
-      const blob = await (await fetch(`data:image/png;base64,${base64}`)).blob();
-      const image = await createImageBitmap(blob);
-      const canvas = new OffscreenCanvas(image.width, image.height);
-      const context = canvas.getContext('2d');
-      context.drawImage(image, 0, 0);
-      const { data } = context.getImageData(0, 0, image.width, image.height);
-      let differing = 0;
-      for (let i = 0; i < data.length; i += 4) {
-        const distance = Math.abs(data[i] - background[0]) + Math.abs(data[i + 1] - background[1]) + Math.abs(data[i + 2] - background[2]);
-        if (distance > 30) differing++;
-      }
-      return differing / (data.length / 4);
+    async ({ images, source, arg }) => {
+      const pixels = async (base64) => {
+        const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${base64}`)).blob());
+        const canvas = new OffscreenCanvas(image.width, image.height);
+        const context = canvas.getContext('2d');
+        context.drawImage(image, 0, 0);
+        return context.getImageData(0, 0, image.width, image.height).data;
+      };
+      const decoded = await Promise.all(images.map(pixels));
+      return new Function(`return ${source}`)()(decoded, arg);
     },
-    { base64: png.toString('base64'), background },
+    { images: pngs.map((png) => png.toString('base64')), source: analysis.toString(), arg },
   );
 }
 
@@ -81,6 +114,26 @@ export function cubeObj() {
   for (const x of [0, 1]) for (const y of [0, 1]) for (const z of [0, 1]) corners.push(`v ${x} ${y} ${z}`);
   const faces = ['1 2 4 3', '5 7 8 6', '1 5 6 2', '3 4 8 7', '1 3 7 5', '2 6 8 4'].map((f) => `f ${f}`);
   return ['# cube made by the browser tests', ...corners, ...faces, ''].join('\n');
+}
+
+/** A torus of n x m quads, each split into two triangles, as OBJ text: 2nm faces, genus 1. */
+export function torusObj(n, m) {
+  const lines = [];
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j < m; j++) {
+      const [a, b] = [(2 * Math.PI * i) / n, (2 * Math.PI * j) / m];
+      const r = 2 + 0.7 * Math.cos(b);
+      lines.push(`v ${r * Math.cos(a)} ${r * Math.sin(a)} ${0.7 * Math.sin(b)}`);
+    }
+  }
+  const at = (i, j) => (i % n) * m + (j % m) + 1;
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j < m; j++) {
+      lines.push(`f ${at(i, j)} ${at(i + 1, j)} ${at(i + 1, j + 1)}`, `f ${at(i, j)} ${at(i + 1, j + 1)} ${at(i, j + 1)}`);
+    }
+  }
+  lines.push('');
+  return lines.join('\n');
 }
 
 /** An n x n grid of quads, each split into two triangles, as OBJ text: (n+1)^2 vertices, 2n^2 faces. */

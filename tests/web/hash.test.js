@@ -9,10 +9,32 @@ describe('parseHash', () => {
   });
 
   it('reads every shareable key', () => {
-    const { state, problems } = parseHash('#mode=regmap&sample=genus2&shading=smooth&wireframe=1&map=R3.1');
+    const { state, problems } = parseHash(
+      '#mode=regmap&sample=genus2&shading=smooth&wireframe=1&map=R3.1&field=1&align=curvature&sharp=180&h=0.05&texture=grid',
+    );
     expect(problems).toEqual([]);
-    expect(state).toEqual({ mode: 'regmap', sample: 'genus2', shading: 'smooth', wireframe: true, map: 'R3.1' });
+    expect(state).toEqual({
+      mode: 'regmap',
+      sample: 'genus2',
+      shading: 'smooth',
+      wireframe: true,
+      map: 'R3.1',
+      field: true,
+      align: 'curvature',
+      sharp: 180,
+      h: 0.05,
+      texture: 'grid',
+    });
     expect(parseHash('wireframe=0').state.wireframe).toBe(false);
+  });
+
+  it('checks the Field options as the form does, and drops invalid ones with a note', () => {
+    for (const hash of ['sharp=0', 'sharp=500', 'sharp=3e1', 'h=0', 'h=7', 'h=1%2F0', 'h=NaN', 'align=best', 'texture=marble', 'field=yes']) {
+      const { state, problems } = parseHash(`#${hash}`);
+      expect(state, hash).toEqual(DEFAULT_STATE);
+      expect(problems, hash).toEqual([`Link setting "${hash.split('=')[0]}" has an invalid value and was ignored.`]);
+    }
+    expect(parseHash('#h=1e-3&sharp=1').state).toMatchObject({ h: 0.001, sharp: 1 });
   });
 
   it('drops malformed values with a note and keeps the defaults', () => {
@@ -75,7 +97,24 @@ describe('formatHash', () => {
   });
 
   it('round-trips through parseHash', () => {
-    const state = { mode: 'regmap', sample: "R3.1'", shading: 'smooth', wireframe: true, map: "R3.1'" };
+    const state = {
+      ...DEFAULT_STATE,
+      mode: 'regmap',
+      sample: "R3.1'",
+      shading: 'smooth',
+      wireframe: true,
+      map: "R3.1'",
+      field: true,
+      align: 'curvature',
+      sharp: 90,
+      h: 0.0025,
+      texture: 'checker',
+    };
     expect(parseHash(formatHash(state))).toEqual({ state, problems: [] });
+  });
+
+  it('writes Field options only when they differ from the defaults', () => {
+    expect(formatHash({ ...DEFAULT_STATE, sample: 'torus', field: true })).toBe('#mode=quad&sample=torus&field=1');
+    expect(formatHash({ ...DEFAULT_STATE, field: true, h: 0.05, sharp: 180 })).toBe('#mode=quad&field=1&sharp=180&h=0.05');
   });
 });

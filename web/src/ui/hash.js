@@ -3,6 +3,7 @@
 // unknown, repeated or malformed is dropped with a note instead of reaching the page.
 
 import { MODES } from './modes.js';
+import { FIELD_DEFAULTS, FIELD_PARSERS } from './field-options.js';
 
 const MAX_HASH_LENGTH = 2000;
 
@@ -19,6 +20,10 @@ const FIELDS = Object.freeze({
   shading: oneOf(['flat', 'smooth']),
   wireframe: flag,
   map: mapName,
+  // The Field view: shown (computed on opening the link), its options, the texture on the surface.
+  field: flag,
+  ...FIELD_PARSERS,
+  texture: oneOf(['off', 'checker', 'grid']),
 });
 
 export const DEFAULT_STATE = Object.freeze({
@@ -27,6 +32,9 @@ export const DEFAULT_STATE = Object.freeze({
   shading: 'flat',
   wireframe: false,
   map: null,
+  field: false,
+  ...FIELD_DEFAULTS,
+  texture: 'off',
 });
 
 /**

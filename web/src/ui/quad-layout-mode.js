@@ -2,11 +2,13 @@ import { COMMANDS } from '../worker/protocol.js';
 import { pickMeshFile } from './file-types.js';
 import { showInfo } from './info-panel.js';
 import { downloadBytes, downloadName } from './download.js';
+import { FieldView } from './field-view.js';
 
 const DEFAULT_SAMPLE = 'genus2';
 
 /**
- * The Quad layout mode: a mesh from a sample or a file, its figures, and its export.
+ * The Quad layout mode: a mesh from a sample or a file, its figures, its export, and the Field view
+ * of its cross field and parameterization.
  * panel: the mode's section of the page; viewer, client (WorkerClient), jobs (Jobs), status (Status);
  * onStateChange(partial state) when what a link should share changes.
  */
@@ -17,6 +19,14 @@ export class QuadLayoutMode {
     this.mesh = null; // the mesh on screen
     this.sample = null; // its sample name, null for a file
     this.sampleNames = [];
+    this.meshCount = 0; // numbers the meshes asked of the worker (see COMMANDS.sampleMesh)
+    this.field = new FieldView({
+      root: this.part('field-view'),
+      viewer,
+      status,
+      request: (...args) => this.request(...args),
+      onStateChange,
+    });
 
     this.part('samples').addEventListener('change', (event) => this.showSample(event.target.value));
     this.part('export-glb').addEventListener('click', () => this.exportGlb());
@@ -31,15 +41,20 @@ export class QuadLayoutMode {
     await this.applyState(state);
   }
 
-  /** Shows the sample a link names; without a valid one, keeps the mesh on screen (or the default). */
-  async applyState({ sample }) {
+  /**
+   * Shows the sample a link names; without a valid one, keeps the mesh on screen (or the default).
+   * Then brings the Field view to the link's options.
+   */
+  async applyState(state) {
     if (this.sampleNames.length === 0) return;
+    const { sample } = state;
     const known = this.sampleNames.includes(sample);
     if (known && sample !== this.sample) await this.showSample(sample);
     if (!known && !this.mesh) await this.showSample(this.defaultSample());
     if (sample && !known) {
       this.status.showNotice(`There is no sample named "${sample}".`, `Samples: ${this.sampleNames.join(', ')}.`);
     }
+    if (this.mesh) await this.field.applyState(state);
   }
 
   defaultSample() {
@@ -47,8 +62,9 @@ export class QuadLayoutMode {
   }
 
   async showSample(name) {
-    const mesh = await this.request(`Building the sample "${name}"`, COMMANDS.sampleMesh, { name });
-    if (mesh) this.show(mesh, name);
+    const meshId = ++this.meshCount;
+    const mesh = await this.request(`Building the sample "${name}"`, COMMANDS.sampleMesh, { name, meshId });
+    if (mesh) this.show(mesh, { id: meshId, sample: name });
     else this.syncSampleMenu();
   }
 
@@ -61,8 +77,9 @@ export class QuadLayoutMode {
       this.status.showError(error);
       return;
     }
-    const mesh = await this.request(`Opening ${file.name}`, COMMANDS.loadMesh, { file });
-    if (mesh) this.show(mesh, null);
+    const meshId = ++this.meshCount;
+    const mesh = await this.request(`Opening ${file.name}`, COMMANDS.loadMesh, { file, meshId });
+    if (mesh) this.show(mesh, { id: meshId, file });
   }
 
   async exportGlb() {
@@ -82,14 +99,16 @@ export class QuadLayoutMode {
     return this.jobs.run(label, (onProgress) => this.client.request(command, payload, { onProgress }));
   }
 
-  show(mesh, sample) {
+  /** A mesh from the worker, with where it came from: { id, sample } or { id, file }. */
+  show(mesh, source) {
     this.mesh = mesh;
-    this.sample = sample;
+    this.sample = source.sample ?? null;
     this.viewer.showMesh(mesh);
+    this.field.setMesh(source);
     showInfo(this.part('info'), mesh);
     this.part('export-glb').disabled = false;
     this.syncSampleMenu();
-    this.onStateChange({ sample });
+    this.onStateChange({ sample: this.sample, field: false });
   }
 
   fillSampleMenu() {

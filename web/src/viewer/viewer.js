@@ -15,6 +15,7 @@ import {
   WebGLRenderer,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { uvTexture } from './textures.js';
 
 export const BACKGROUND = '#23272e';
 const SURFACE = '#d9c3a0';
@@ -22,6 +23,8 @@ const EDGES = '#1b1d22';
 
 /**
  * The 3D view: one surface mesh with optional polygon edges, orbit controls, rendered on demand.
+ * Drawn with the mesh: named layers of what the stages found on it (crosses, singularities), and
+ * the mesh again with texture coordinates that show a parameterization in place of the plain one.
  * container: an element the canvas fills; onContextLost() when the browser takes the GPU context
  * away (three.js rebuilds what it needs once the context is restored). Throws if WebGL cannot start.
  */
@@ -55,9 +58,14 @@ export class Viewer {
       polygonOffsetUnits: 1,
     });
     this.edgeMaterial = new LineBasicMaterial({ color: EDGES });
+    this.texturedMaterial = this.material.clone();
+    this.texturedMaterial.color.set('#ffffff');
     this.surface = null;
     this.edges = null;
     this.wireframe = false;
+    this.uvSurface = null; // the mesh as separate corners with texture coordinates
+    this.texture = 'off';
+    this.layers = new Map(); // name -> object
 
     this.renderPending = false;
     new ResizeObserver(() => this.resize(container)).observe(container);
@@ -86,8 +94,62 @@ export class Viewer {
 
   /** 'flat': one normal per triangle; 'smooth': interpolated vertex normals. */
   setShading(shading) {
-    this.material.flatShading = shading === 'flat';
-    this.material.needsUpdate = true;
+    for (const material of [this.material, this.texturedMaterial]) {
+      material.flatShading = shading === 'flat';
+      material.needsUpdate = true;
+    }
+    this.requestRender();
+  }
+
+  /** Shows `object` as the layer `name` in place of the layer's previous object; null removes it. */
+  setLayer(name, object) {
+    remove(this.scene, this.layers.get(name), { withMaterial: true });
+    this.layers.delete(name);
+    if (object) {
+      this.layers.set(name, object);
+      this.scene.add(object);
+    }
+    this.requestRender();
+  }
+
+  setLayerVisible(name, visible) {
+    const layer = this.layers.get(name);
+    if (layer) layer.visible = visible;
+    this.requestRender();
+  }
+
+  /**
+   * The shown mesh as separate corners { positions, normals (3 per corner), uv (2 per corner) },
+   * drawn with the texture of setTexture in place of the plain surface; null removes it.
+   */
+  setUvSurface(corners) {
+    remove(this.scene, this.uvSurface);
+    this.uvSurface = null;
+    if (corners) {
+      const geometry = new BufferGeometry();
+      geometry.setAttribute('position', new BufferAttribute(corners.positions, 3));
+      geometry.setAttribute('normal', new BufferAttribute(corners.normals, 3));
+      geometry.setAttribute('uv', new BufferAttribute(corners.uv, 2));
+      this.uvSurface = new Mesh(geometry, this.texturedMaterial);
+      this.scene.add(this.uvSurface);
+    }
+    this.showTexture();
+  }
+
+  /** 'off', or a kind of UV_TEXTURES (textures.js) for the surface with texture coordinates. */
+  setTexture(kind) {
+    this.texture = kind;
+    if (kind !== 'off') {
+      this.texturedMaterial.map = uvTexture(kind, this.renderer.capabilities.getMaxAnisotropy());
+      this.texturedMaterial.needsUpdate = true;
+    }
+    this.showTexture();
+  }
+
+  showTexture() {
+    const textured = this.uvSurface !== null && this.texture !== 'off';
+    if (this.uvSurface) this.uvSurface.visible = textured;
+    if (this.surface) this.surface.visible = !textured;
     this.requestRender();
   }
 
@@ -97,14 +159,13 @@ export class Viewer {
     this.requestRender();
   }
 
+  /** Removes the mesh and everything drawn with it. */
   clear() {
-    for (const object of [this.surface, this.edges]) {
-      if (!object) continue;
-      this.scene.remove(object);
-      object.geometry.dispose();
-    }
+    for (const object of [this.surface, this.edges]) remove(this.scene, object);
     this.surface = null;
     this.edges = null;
+    for (const name of [...this.layers.keys()]) this.setLayer(name, null);
+    this.setUvSurface(null);
   }
 
   // Puts the camera where the bounding sphere just fits the narrower of the two view angles.
@@ -139,4 +200,12 @@ export class Viewer {
       this.renderer.render(this.scene, this.camera);
     });
   }
+}
+
+function remove(scene, object, { withMaterial = false } = {}) {
+  if (!object) return;
+  scene.remove(object);
+  object.geometry.dispose();
+  if (withMaterial) object.material.dispose();
+  object.dispose?.(); // the per-instance buffers of an InstancedMesh
 }

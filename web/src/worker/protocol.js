@@ -21,8 +21,14 @@
 
 export const COMMANDS = Object.freeze({
   sampleNames: 'sampleNames', // payload: none -> { names: string[] }
-  sampleMesh: 'sampleMesh', // payload: { name } -> mesh (see worker.js)
-  loadMesh: 'loadMesh', // payload: { file: File } -> mesh
+  // The page numbers the meshes it asks for (meshId). The worker's core keeps the last mesh it
+  // built for the stages below; a fresh worker (after Cancel or a crash) rebuilds it from `mesh`.
+  sampleMesh: 'sampleMesh', // payload: { name, meshId } -> mesh (see worker.js)
+  loadMesh: 'loadMesh', // payload: { file: File, meshId } -> mesh
+  // Quad layout stages of the mesh shown. mesh: { id, sample } or { id, file } as it was loaded;
+  // field: { align: 'smooth'|'curvature', sharp: degrees }; h: the sizing, relative to the bounding box.
+  crossField: 'crossField', // payload: { mesh, field } -> { info, seconds, glyphs, singularities: { positions, valences }, markerRadius }
+  seamlessParam: 'seamlessParam', // payload: { mesh, field, h } -> { info, corners: { positions, normals, uv } }
   exportGlb: 'exportGlb', // payload: { positions, triangles, faceIds?, colors?, extras? } -> { bytes }
   // Regular maps. A map is a catalog name (R3.1, R3.1' for the dual) or a presentation in Conder's
   // text format; its info is { name, p, q, order, vertices, edges, faces, genus, orientable, euler,

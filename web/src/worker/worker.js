@@ -2,6 +2,8 @@
 // protocol.js. No algorithm lives here: it calls the core and prepares data for the viewer.
 import { COMMANDS, PAGE_ERROR_KINDS, errorEvent, ownedBuffers, progressEvent, resultEvent } from './protocol.js';
 import { polygonEdges, vertexNormals } from './display.js';
+import { cornerArrays, crossGlyphs, markerRadius, vertexPoints } from './field-display.js';
+import { FIELD_STAGES, PARAM_STAGES, planStages, stagedProgress } from './stages.js';
 
 // The wasm build is a static file (web/public/wasm), not a source module: an absolute URL keeps
 // Vite's dev server from treating the import as one of its own.
@@ -9,6 +11,10 @@ const CORE_URL = new URL(`${import.meta.env.BASE_URL}wasm/tessera.mjs`, self.loc
 
 let core = null; // Promise of the wasm module, created on first use, dropped after a trap
 const catalogs = new WeakMap(); // wasm module -> its catalog rows, read into it once
+// The mesh the module's session holds (the core keeps the last mesh it built), with the arrays the
+// field view is drawn from: { module, id, positions, triangles, normals, fieldKey }, where id is the
+// page's number of the mesh and fieldKey names the options of the session's cross field.
+let session = null;
 
 function loadCore() {
   core ??= import(/* @vite-ignore */ CORE_URL)
@@ -31,20 +37,51 @@ const handlers = {
     return { names: [...module.sampleNames()] };
   },
 
-  async [COMMANDS.sampleMesh]({ name }, progress) {
+  async [COMMANDS.sampleMesh]({ name, meshId }, progress) {
     progress('Starting the geometry core', 0);
     const module = await loadCore();
     progress(`Building the sample "${name}"`, 0.2);
-    return meshForViewer(module.sampleMesh(name), progress);
+    return remember(module, meshId, meshForViewer(module.sampleMesh(name), progress));
   },
 
-  async [COMMANDS.loadMesh]({ file }, progress) {
+  async [COMMANDS.loadMesh]({ file, meshId }, progress) {
     progress('Starting the geometry core', 0);
     const module = await loadCore();
     progress(`Reading ${file.name}`, 0.1);
     const bytes = new Uint8Array(await file.arrayBuffer());
     progress('Building the mesh', 0.3);
-    return meshForViewer(module.loadMesh(bytes, file.name), progress);
+    return remember(module, meshId, meshForViewer(module.loadMesh(bytes, file.name), progress));
+  },
+
+  async [COMMANDS.crossField]({ mesh, field }, progress) {
+    const shown = await sessionOf(mesh, progress);
+    const plan = planStages(FIELD_STAGES, [1], 0.1, 0.9);
+    const started = performance.now();
+    const result = designField(shown, field, stagedProgress(plan, progress));
+    const seconds = (performance.now() - started) / 1000;
+    progress('Preparing the view', 0.9);
+    const { positions, triangles } = shown;
+    return {
+      info: result.info,
+      seconds,
+      glyphs: crossGlyphs(positions, triangles, result.directions),
+      singularities: {
+        positions: vertexPoints(positions, result.singularityVertices),
+        valences: result.singularityValences,
+      },
+      markerRadius: markerRadius(positions, triangles),
+    };
+  },
+
+  async [COMMANDS.seamlessParam]({ mesh, field, h }, progress) {
+    const shown = await sessionOf(mesh, progress);
+    // Shares of the bar as the stages' times on fertility (28k triangles).
+    const onProgress = stagedProgress(planStages(PARAM_STAGES, [3, 0.2, 0.5, 1, 2.5], 0.1, 0.95), progress);
+    if (shown.fieldKey !== fieldKey(field)) designField(shown, field, onProgress);
+    const result = shown.module.seamlessParam({ h }, onProgress);
+    progress('Preparing the view', 0.95);
+    const corners = cornerArrays(shown.positions, shown.normals, shown.triangles);
+    return { info: result.info, corners: { ...corners, uv: result.uv } };
   },
 
   async [COMMANDS.exportGlb](payload, progress) {
@@ -93,6 +130,38 @@ function meshForViewer(mesh, progress) {
     edges: polygonEdges(triangles, triangleFace),
   };
 }
+
+// Keeps copies of what the field view needs of a mesh the session now holds (the mesh itself goes
+// to the page, its arrays transferred).
+function remember(module, id, mesh) {
+  const { positions, triangles, normals } = mesh;
+  session = { module, id, positions: positions.slice(), triangles: triangles.slice(), normals: normals.slice(), fieldKey: null };
+  return mesh;
+}
+
+// The session of the page's mesh { id, sample | file }: the current one, or, in a fresh worker or
+// core, the mesh built again from where it came from.
+async function sessionOf(mesh, progress) {
+  progress('Starting the geometry core', 0);
+  const module = await loadCore();
+  if (session?.module === module && session.id === mesh.id) return session;
+  progress('Building the mesh again in a fresh core', 0.02);
+  const built = mesh.file
+    ? module.loadMesh(new Uint8Array(await mesh.file.arrayBuffer()), mesh.file.name)
+    : module.sampleMesh(mesh.sample);
+  const { positions, triangles } = built;
+  remember(module, mesh.id, { positions, triangles, normals: vertexNormals(positions, triangles) });
+  return session;
+}
+
+function designField(shown, { align, sharp }, onProgress) {
+  shown.fieldKey = null;
+  const result = shown.module.crossField({ align, sharp }, onProgress);
+  shown.fieldKey = fieldKey({ align, sharp });
+  return result;
+}
+
+const fieldKey = ({ align, sharp }) => `${align} ${sharp}`;
 
 // A trap or an error without a kind may leave the wasm module in a broken state: drop it, so that
 // the next request starts a fresh one.

@@ -1,0 +1,42 @@
+// The core reports progress as (stage, fraction within that stage); the page shows one bar over
+// the whole job with a label per stage. A plan says where each stage of a job lies on the bar.
+
+/** The core's stages of the cross field and the seamless parameterization, in order. */
+export const FIELD_STAGES = Object.freeze([['field', 'Designing the cross field']]);
+export const PARAM_STAGES = Object.freeze([
+  ['field', 'Designing the cross field'],
+  ['cut graph', 'Cutting the surface open along the cut graph'],
+  ['assembly', 'Assembling the Poisson system'],
+  ['solve', 'Solving the Poisson system'],
+  ['injectivity', 'Injectivity constraints near singularities (GLPK)'],
+]);
+
+/**
+ * A plan that gives the stages [coreStage, label] consecutive parts of the bar from `from` to
+ * `to`, in proportion to `weights` (one per stage). Returns [[coreStage, label, start, end]].
+ */
+export function planStages(stages, weights, from, to) {
+  const total = weights.reduce((sum, w) => sum + w, 0);
+  let start = from;
+  return stages.map(([stage, label], i) => {
+    const end = start + ((to - from) * weights[i]) / total;
+    const part = [stage, label, start, end];
+    start = end;
+    return part;
+  });
+}
+
+/**
+ * onProgress(stage, fraction) for the core, reporting progress(label, fraction of the job) by the
+ * plan. A stage the plan does not know shows under its own name with the bar where it was.
+ */
+export function stagedProgress(plan, progress) {
+  let last = plan.length > 0 ? plan[0][2] : 0;
+  return (stage, fraction) => {
+    const part = plan.find(([name]) => name === stage);
+    if (!part) return progress(stage, last);
+    const [, label, start, end] = part;
+    last = start + (end - start) * Math.min(1, Math.max(0, Number(fraction) || 0));
+    progress(label, last);
+  };
+}
