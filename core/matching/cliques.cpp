@@ -1,0 +1,150 @@
+#include "matching/cliques.h"
+
+#include <algorithm>
+#include <span>
+
+namespace tessera::matching {
+
+namespace {
+
+// Compressed sorted adjacency lists.
+struct Adjacency {
+  std::vector<std::uint32_t> start;  // size n + 1
+  std::vector<std::uint32_t> list;
+
+  std::span<const std::uint32_t> of(std::uint32_t e) const {
+    return {list.data() + start[e], list.data() + start[e + 1]};
+  }
+};
+
+Adjacency adjacency_from_pairs(std::size_t n,
+                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  Adjacency adj;
+  adj.start.assign(n + 1, 0);
+  for (const auto& [a, b] : pairs) ++adj.start[a + 1];
+  for (std::size_t i = 0; i < n; ++i) adj.start[i + 1] += adj.start[i];
+  adj.list.reserve(pairs.size());
+  for (const auto& [a, b] : pairs) adj.list.push_back(b);
+  return adj;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> conflict_pairs(const MatchingProblem& p) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  pairs.reserve(2 * p.conflicts.size());
+  for (const ConflictPair& c : p.conflicts) {
+    pairs.emplace_back(c.first, c.second);
+    pairs.emplace_back(c.second, c.first);
+  }
+  return pairs;
+}
+
+// Conflict pairs plus pairs of edges with a common node.
+Adjacency exclusion_graph(const MatchingProblem& p) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = conflict_pairs(p);
+  std::vector<std::vector<std::uint32_t>> incident(p.node_count());
+  for (std::uint32_t e = 0; e < p.edges.size(); ++e) {
+    incident[p.edges[e].u].push_back(e);
+    incident[p.edges[e].v].push_back(e);
+  }
+  for (const std::vector<std::uint32_t>& star : incident)
+    for (std::uint32_t a : star)
+      for (std::uint32_t b : star)
+        if (a != b) pairs.emplace_back(a, b);
+  return adjacency_from_pairs(p.edges.size(), pairs);
+}
+
+class CliqueCover {
+ public:
+  explicit CliqueCover(const MatchingProblem& problem)
+      : exclusion_(exclusion_graph(problem)),
+        conflicts_(conflicts_of(problem)),
+        covered_(conflicts_.list.size(), 0) {}
+
+  std::vector<Clique> run() {
+    std::vector<Clique> cliques;
+    const auto m = static_cast<std::uint32_t>(conflicts_.start.size() - 1);
+    for (std::uint32_t e = 0; e < m; ++e) {
+      for (std::uint32_t k = conflicts_.start[e]; k < conflicts_.start[e + 1]; ++k) {
+        if (covered_[k]) continue;
+        Clique clique = grow(e, conflicts_.list[k]);
+        mark_covered(clique);
+        cliques.push_back(std::move(clique));
+      }
+    }
+    return cliques;
+  }
+
+ private:
+  static Adjacency conflicts_of(const MatchingProblem& problem) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = conflict_pairs(problem);
+    return adjacency_from_pairs(problem.edges.size(), pairs);
+  }
+
+  // Position of the conflict (a, b) in conflicts_.list, or npos.
+  std::size_t conflict_slot(std::uint32_t a, std::uint32_t b) const {
+    const auto list = conflicts_.of(a);
+    const auto it = std::lower_bound(list.begin(), list.end(), b);
+    if (it == list.end() || *it != b) return npos;
+    return conflicts_.start[a] + static_cast<std::size_t>(it - list.begin());
+  }
+
+  std::size_t uncovered_links(std::uint32_t c, const Clique& clique) const {
+    std::size_t links = 0;
+    for (std::uint32_t member : clique) {
+      const std::size_t slot = conflict_slot(c, member);
+      links += slot != npos && !covered_[slot];
+    }
+    return links;
+  }
+
+  static std::vector<std::uint32_t> intersect(std::span<const std::uint32_t> a,
+                                              std::span<const std::uint32_t> b) {
+    std::vector<std::uint32_t> out;
+    std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+    return out;
+  }
+
+  // Extends {a, b} by common neighbours, preferring those that cover the most new conflict pairs.
+  Clique grow(std::uint32_t a, std::uint32_t b) const {
+    Clique clique = {a, b};
+    std::vector<std::uint32_t> candidates = intersect(exclusion_.of(a), exclusion_.of(b));
+    while (!candidates.empty()) {
+      std::uint32_t best = candidates.front();
+      std::size_t best_links = 0;
+      for (std::uint32_t c : candidates) {
+        const std::size_t links = uncovered_links(c, clique);
+        if (links > best_links) {
+          best = c;
+          best_links = links;
+        }
+      }
+      clique.push_back(best);
+      candidates = intersect(candidates, exclusion_.of(best));
+    }
+    std::sort(clique.begin(), clique.end());
+    return clique;
+  }
+
+  void mark_covered(const Clique& clique) {
+    for (std::uint32_t a : clique)
+      for (std::uint32_t b : clique) {
+        const std::size_t slot = a == b ? npos : conflict_slot(a, b);
+        if (slot != npos) covered_[slot] = 1;
+      }
+  }
+
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+  Adjacency exclusion_;
+  Adjacency conflicts_;
+  std::vector<std::uint8_t> covered_;  // per entry of conflicts_.list
+};
+
+}  // namespace
+
+std::vector<Clique> conflict_cliques(const MatchingProblem& problem) {
+  return CliqueCover(problem).run();
+}
+
+}  // namespace tessera::matching

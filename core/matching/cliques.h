@@ -1,0 +1,22 @@
+// Clique aggregation of the conflict pairs (5.3). The illegal crossings of Sec. 4.6 come in
+// bunches: many edges crossing near the same point conflict pairwise, so that thousands of rows
+// x_e + x_f <= 1 say the same as a few hundred rows sum_{e in C} x_e <= 1. The cliques are taken in
+// the exclusion graph of the edges (conflict pairs plus pairs of edges sharing a node, since a
+// matching holds at most one of those too), which makes each row at least as strong as the pairs
+// it replaces.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "matching/problem.h"
+
+namespace tessera::matching {
+
+using Clique = std::vector<std::uint32_t>;  // edge indices, increasing
+
+// Maximal cliques of the exclusion graph, found greedily, that together hold every conflict pair
+// (each clique holds at least one). Deterministic.
+std::vector<Clique> conflict_cliques(const MatchingProblem& problem);
+
+}  // namespace tessera::matching

@@ -1,0 +1,34 @@
+// What every P1 solver returns (thesis Ch. 5): the chosen edges with the objective (5.1) and a
+// proven lower bound, so that the gap certifies how far from optimal the answer can be.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tessera::matching {
+
+enum class SolveStatus {
+  optimal,     // edges are optimal: objective == lower_bound (gap 0 within the solver's tolerance)
+  feasible,    // stopped at the time limit with a feasible matching; gap > 0 is proven
+  infeasible,  // proven: no matching covers every port without a conflict pair
+  time_limit,  // stopped at the time limit before any feasible matching was found
+};
+
+const char* to_string(SolveStatus status);
+
+struct MatchingResult {
+  SolveStatus status = SolveStatus::time_limit;
+  std::vector<std::uint32_t> edges;  // indices into problem.edges, increasing
+  double objective = 0.0;            // (5.1) of edges; +infinity without a solution
+  double lower_bound = 0.0;          // no matching is cheaper; +infinity when infeasible
+  double seconds = 0.0;              // wall time of the solve
+  std::uint64_t nodes = 0;           // branch-and-bound nodes explored
+  bool has_solution() const {
+    return status == SolveStatus::optimal || status == SolveStatus::feasible;
+  }
+  // (objective - lower_bound) / max(|objective|, 1e-9); 0 when optimal, +infinity without solution.
+  double gap() const;
+};
+
+}  // namespace tessera::matching
