@@ -50,6 +50,12 @@ describe('markerRadius', () => {
     expect(scaled).toBeCloseTo(10 * small, 5);
     expect(markerRadius(positions, new Uint32Array())).toBe(0);
   });
+
+  it('stays visible when the triangles are tiny against the whole mesh', () => {
+    // the unit square's two triangles and a vertex 1000 units away
+    const far = new Float32Array([...positions.subarray(0, 12), 1000, 0, 0]);
+    expect(markerRadius(far, square)).toBeCloseTo(0.007 * Math.hypot(1000, 1), 3);
+  });
 });
 
 describe('vertexPoints', () => {

@@ -4,8 +4,10 @@
 // A cross's arms reach this share of sqrt(triangle area) from the centroid: inside the triangle
 // for any triangle that is not very thin.
 export const GLYPH_ARM = 0.3;
-// Singularity markers: this share of the mean sqrt(triangle area), a few triangles across.
+// Singularity markers: this share of the mean sqrt(triangle area), a few triangles across, but at
+// least this share of the bounding-box diagonal, so that they stay visible on fine meshes.
 const MARKER_SIZE = 0.6;
+const MARKER_MIN = 0.007;
 
 /**
  * The crosses as line segments, two per triangle through its centroid.
@@ -32,12 +34,25 @@ export function crossGlyphs(positions, triangles, directions) {
   return glyphs;
 }
 
-/** The radius of the singularity markers for a mesh: MARKER_SIZE * mean sqrt(triangle area). */
+/**
+ * The radius of the singularity markers for a mesh: MARKER_SIZE * mean sqrt(triangle area), at
+ * least MARKER_MIN * the diagonal of the bounding box.
+ */
 export function markerRadius(positions, triangles) {
   const count = triangles.length / 3;
   let sum = 0;
   for (let t = 0; t < count; t++) sum += Math.sqrt(triangleShape(positions, triangles, t).area);
-  return count > 0 ? (MARKER_SIZE * sum) / count : 0;
+  return count > 0 ? Math.max((MARKER_SIZE * sum) / count, MARKER_MIN * boxDiagonal(positions)) : 0;
+}
+
+function boxDiagonal(positions) {
+  const low = [Infinity, Infinity, Infinity];
+  const high = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < positions.length; i++) {
+    low[i % 3] = Math.min(low[i % 3], positions[i]);
+    high[i % 3] = Math.max(high[i % 3], positions[i]);
+  }
+  return Math.hypot(...high.map((x, k) => x - low[k]));
 }
 
 /** The positions of some vertices: Float32Array (3n) for the vertex numbers in `vertices`. */
