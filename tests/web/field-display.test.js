@@ -43,18 +43,27 @@ describe('crossGlyphs', () => {
 });
 
 describe('markerRadius', () => {
+  // A strip of n unit squares along x: the triangles keep their size, the mesh grows.
+  const strip = (n) => {
+    const points = [];
+    for (let i = 0; i <= n; i++) points.push(i, 0, 0, i, 1, 0);
+    const corners = [];
+    for (let i = 0; i < n; i++) corners.push(2 * i, 2 * i + 2, 2 * i + 3, 2 * i, 2 * i + 3, 2 * i + 1);
+    return [new Float32Array(points), new Uint32Array(corners)];
+  };
+
   it('follows the size of the triangles', () => {
-    const small = markerRadius(positions, square);
-    const scaled = markerRadius(positions.map((x) => 10 * x), square);
-    expect(small).toBeGreaterThan(0);
-    expect(scaled).toBeCloseTo(10 * small, 5);
+    const [points, corners] = strip(40);
+    const radius = markerRadius(points, corners);
+    expect(radius).toBeCloseTo(0.6 * Math.sqrt(0.5), 6);
+    expect(markerRadius(points.map((x) => 10 * x), corners)).toBeCloseTo(10 * radius, 5);
     expect(markerRadius(positions, new Uint32Array())).toBe(0);
   });
 
-  it('stays visible when the triangles are tiny against the whole mesh', () => {
-    // the unit square's two triangles and a vertex 1000 units away
-    const far = new Float32Array([...positions.subarray(0, 12), 1000, 0, 0]);
-    expect(markerRadius(far, square)).toBeCloseTo(0.007 * Math.hypot(1000, 1), 3);
+  it('keeps markers visible on fine meshes and small on coarse ones', () => {
+    const [fine, fineCorners] = strip(1000);
+    expect(markerRadius(fine, fineCorners)).toBeCloseTo(0.007 * Math.hypot(1000, 1), 3);
+    expect(markerRadius(positions, square)).toBeCloseTo(0.025 * Math.hypot(2, 1), 6); // the box of all five points
   });
 });
 

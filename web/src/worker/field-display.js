@@ -4,10 +4,11 @@
 // A cross's arms reach this share of sqrt(triangle area) from the centroid: inside the triangle
 // for any triangle that is not very thin.
 export const GLYPH_ARM = 0.3;
-// Singularity markers: this share of the mean sqrt(triangle area), a few triangles across, but at
-// least this share of the bounding-box diagonal, so that they stay visible on fine meshes.
+// Singularity markers: this share of the mean sqrt(triangle area), a few triangles across, within
+// these shares of the bounding-box diagonal: visible on fine meshes, not hiding coarse ones.
 const MARKER_SIZE = 0.6;
 const MARKER_MIN = 0.007;
+const MARKER_MAX = 0.025;
 
 /**
  * The crosses as line segments, two per triangle through its centroid.
@@ -35,14 +36,16 @@ export function crossGlyphs(positions, triangles, directions) {
 }
 
 /**
- * The radius of the singularity markers for a mesh: MARKER_SIZE * mean sqrt(triangle area), at
- * least MARKER_MIN * the diagonal of the bounding box.
+ * The radius of the singularity markers for a mesh: MARKER_SIZE * mean sqrt(triangle area), kept
+ * between MARKER_MIN and MARKER_MAX times the diagonal of the bounding box.
  */
 export function markerRadius(positions, triangles) {
   const count = triangles.length / 3;
+  if (count === 0) return 0;
   let sum = 0;
   for (let t = 0; t < count; t++) sum += Math.sqrt(triangleShape(positions, triangles, t).area);
-  return count > 0 ? Math.max((MARKER_SIZE * sum) / count, MARKER_MIN * boxDiagonal(positions)) : 0;
+  const diagonal = boxDiagonal(positions);
+  return Math.min(Math.max((MARKER_SIZE * sum) / count, MARKER_MIN * diagonal), MARKER_MAX * diagonal);
 }
 
 function boxDiagonal(positions) {
