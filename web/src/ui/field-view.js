@@ -5,8 +5,6 @@ import { fillFigures } from './info-panel.js';
 import { fieldFigures, valenceCounts } from './field-figures.js';
 import { FIELD_DEFAULTS, FIELD_PARSERS, readFieldOptions, sameField } from './field-options.js';
 
-const TEXTURES = ['off', 'checker', 'grid'];
-
 /**
  * The Field view of the Quad layout mode: the options, the cross field of the mesh on screen
  * (crosses, singularities by valence) and its seamless parameterization (a texture), with figures.
@@ -44,23 +42,23 @@ export class FieldView {
   /** Brings the options, the texture and the field to a link's state. */
   async applyState(state) {
     this.fillForm(state);
-    this.input('texture').value = TEXTURES.includes(state.texture) ? state.texture : 'off';
-    this.viewer.setTexture(this.input('texture').value);
+    this.input('texture').value = state.texture;
+    this.viewer.setTexture(state.texture);
     if (!state.field) return this.clear();
     const options = { align: state.align, sharp: state.sharp, h: state.h };
     if (this.shown?.param && sameField(this.shown.options, options) && this.shown.options.h === options.h) return;
     await this.compute(options);
   }
 
-  computeFromForm() {
+  async computeFromForm() {
     const texts = Object.fromEntries(Object.keys(FIELD_PARSERS).map((key) => [key, this.input(key).value]));
     const { options, problems } = readFieldOptions(texts);
     for (const key of Object.keys(FIELD_PARSERS)) this.input(key).setAttribute('aria-invalid', String(key in problems));
     if (Object.keys(problems).length > 0) {
       this.status.showMessage('error', 'The field options cannot be used', Object.values(problems).join(' '));
-      return Promise.resolve();
+      return;
     }
-    return this.compute(options);
+    await this.compute(options);
   }
 
   /**
