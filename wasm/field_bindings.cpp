@@ -8,6 +8,7 @@
 
 #include "field/design.h"
 #include "guard.h"
+#include "js_progress.h"
 #include "param/param_json.h"
 #include "session.h"
 #include "typed_arrays.h"
@@ -16,20 +17,6 @@ namespace tessera::wasm {
 namespace {
 
 using emscripten::val;
-
-Progress js_progress(const val& on_progress) {
-  if (on_progress.isUndefined() || on_progress.isNull()) return Progress();
-  return Progress(
-      [on_progress](const std::string& stage, double fraction) { on_progress(stage, fraction); });
-}
-
-double number_option(const val& options, const char* key, double fallback) {
-  if (options.isUndefined() || options.isNull()) return fallback;
-  const val value = options[key];
-  if (value.isUndefined()) return fallback;
-  if (!value.isNumber()) throw InputError(std::string("option '") + key + "' must be a number");
-  return value.as<double>();
-}
 
 FieldOptions field_options(const val& options) {
   FieldOptions field;

@@ -16,6 +16,7 @@
 #include "mesh/mesh.h"
 #include "mesh/shapes.h"
 #include "mesh/validate.h"
+#include "mesh_display.h"
 #include "session.h"
 #include "typed_arrays.h"
 
@@ -57,22 +58,7 @@ val mesh_result(const std::string& name, const Mesh& mesh, const ValidationRepor
   val result = val::object();
   result.set("name", name);
   result.set("info", json_to_val(to_json(mesh_info(mesh, report))));
-  std::vector<float> positions;
-  positions.reserve(3 * mesh.vertex_count());
-  for (const Eigen::Vector3d& p : mesh.positions)
-    for (int k = 0; k < 3; ++k) positions.push_back(static_cast<float>(p[k]));
-  std::vector<std::uint32_t> triangles;
-  std::vector<std::uint32_t> triangle_face;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    const auto face = mesh.face(f);
-    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-      triangles.insert(triangles.end(), {face[0], face[k], face[k + 1]});
-      triangle_face.push_back(static_cast<std::uint32_t>(f));
-    }
-  }
-  result.set("positions", to_typed_array(positions));
-  result.set("triangles", to_typed_array(triangles));
-  result.set("triangleFace", to_typed_array(triangle_face));
+  set_display_arrays(result, mesh);
   return result;
 }
 

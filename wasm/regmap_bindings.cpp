@@ -8,11 +8,16 @@
 #include <optional>
 #include <string>
 
+#include "export/glb.h"
 #include "guard.h"
+#include "js_progress.h"
+#include "mesh_display.h"
 #include "regmap/catalog.h"
 #include "regmap/conder_format.h"
 #include "regmap/finite_group.h"
 #include "regmap/map_json.h"
+#include "regmap/regular_surface.h"
+#include "regmap/surface_export.h"
 #include "regmap/tiling_svg.h"
 #include "regmap/triangle_tiling.h"
 #include "typed_arrays.h"
@@ -99,12 +104,69 @@ val map_tiling(const std::string& spec) {
   });
 }
 
+// The last regular surface built, kept for its GLB export.
+std::optional<std::pair<std::string, regmap::RegularSurface>>& last_surface() {
+  static std::optional<std::pair<std::string, regmap::RegularSurface>> surface;
+  return surface;
+}
+
+regmap::SurfaceOptions surface_options(const val& options) {
+  regmap::SurfaceOptions surface;
+  const bool given = !options.isUndefined() && !options.isNull();
+  const val base = given ? options["base"] : val::undefined();
+  if (!base.isUndefined()) {
+    const std::string name = base.isString() ? base.as<std::string>() : "";
+    if (name == "platonic") {
+      surface.base = regmap::SurfaceBase::Platonic;
+    } else if (name == "relax") {
+      surface.base = regmap::SurfaceBase::Relax;
+    } else if (name != "auto") {
+      throw InputError("option 'base' must be 'auto', 'platonic' or 'relax'");
+    }
+  }
+  surface.tube.radius = number_option(options, "tubeRadius", surface.tube.radius);
+  const double smoothness = number_option(options, "smoothness", surface.tube.smoothness);
+  if (!(smoothness >= 1 && smoothness <= 16))
+    throw InputError("option 'smoothness' must be between 1 and 16");
+  surface.tube.smoothness = static_cast<int>(smoothness);
+  return surface;
+}
+
+// { info, stats: surface_stats_json, positions, triangles, triangleFace, tile: Int32Array (per
+//   face of the surface mesh: its quarter tube) }
+val map_surface(const std::string& spec, const val& options, const val& on_progress) {
+  return guard([&] {
+    const Enumerated e = enumerate(spec);
+    last_surface().reset();
+    regmap::RegularSurface surface = regmap::build_regular_surface(
+        e.presentation, e.group, surface_options(options), page_limits(), js_progress(on_progress));
+    val result = val::object();
+    result.set("info", json_to_val(regmap::map_info_json(e.presentation, e.figures, e.seconds)));
+    result.set("stats", json_to_val(regmap::surface_stats_json(surface.stats)));
+    set_display_arrays(result, surface.mesh);
+    result.set("tile", to_typed_array(surface.mesh.face_attributes.at(regmap::kTileAttribute)));
+    last_surface().emplace(e.presentation.name, std::move(surface));
+    return result;
+  });
+}
+
+// The last surface as GLB: quarter tubes coloured, per-face _TILE, figures in extras.
+val surface_glb() {
+  return guard([&] {
+    if (!last_surface()) throw InputError("no regular surface has been built yet");
+    const auto& [name, surface] = *last_surface();
+    return to_typed_array(write_glb(regmap::regular_surface_scene(surface, name)));
+  });
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(tessera_regmap) {
   emscripten::function("regmapLoadCatalog", &load_catalog);
   emscripten::function("regmapInfo", &map_info);
   emscripten::function("regmapTiling", &map_tiling);
+  emscripten::function("regmapSurface", &map_surface);
+  emscripten::function("regmapSurfaceGlb", &surface_glb);
 }
 
 }  // namespace tessera::wasm

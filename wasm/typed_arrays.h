@@ -43,4 +43,14 @@ inline nlohmann::json val_to_json(const emscripten::val& value) {
   return json;
 }
 
+// options[key] as a number, `fallback` when options or the key is undefined; InputError when the
+// value is not a number.
+inline double number_option(const emscripten::val& options, const char* key, double fallback) {
+  if (options.isUndefined() || options.isNull()) return fallback;
+  const emscripten::val value = options[key];
+  if (value.isUndefined()) return fallback;
+  if (!value.isNumber()) throw InputError(std::string("option '") + key + "' must be a number");
+  return value.as<double>();
+}
+
 }  // namespace tessera::wasm

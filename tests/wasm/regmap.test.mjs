@@ -2,6 +2,7 @@
 // a presentation of an infinite group ends with a clear limit error.
 import test from 'node:test';
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -50,4 +51,31 @@ test('the tiling of R2.4 is one polygon with paired sides, drawn as SVG', () => 
   assert.equal(polygon.boundaryCycles, 1);
   assert.ok(polygon.boundaryPairs > 0);
   assert.match(svg, /^<\?xml|^<svg/);
+});
+
+test('the regular surface of R2.4 is a closed genus-5 surface of 20 quarter tubes, and exports', () => {
+  const stages = new Set();
+  const surface = tessera.regmapSurface('R2.4', { base: 'auto' }, (stage) => stages.add(stage));
+  assert.equal(surface.stats.genus, 5);
+  assert.equal(surface.stats.quarter_tubes, 20);
+  assert.equal(surface.stats.closed, true);
+  assert.equal(surface.stats.oriented, true);
+  assert.equal(surface.stats.relations_hold, true);
+  assert.equal(surface.tile.length, surface.triangleFace[surface.triangleFace.length - 1] + 1);
+  assert.equal(new Set(surface.tile).size, 20);
+  assert.ok(stages.size > 0);
+  const glb = tessera.regmapSurfaceGlb();
+  assert.equal(new TextDecoder().decode(glb.subarray(0, 4)), 'glTF');
+  assert.throws(() => tessera.regmapSurface('R2.4', { base: 'hexagonal' }, undefined), (e) => e.kind === 'input');
+});
+
+test('native and wasm build the same regular surface', () => {
+  const cli = path.resolve(here, '../../build/native/cli/tessera');
+  for (const name of ['R2.4', 'R3.1']) {
+    const wasm = tessera.regmapSurface(name, {}, undefined).stats;
+    const native = JSON.parse(execFileSync(cli, ['regmap', 'surface', name, '--json'], { encoding: 'utf8' }));
+    // Self-intersection counts are left out: touching triangles make them sensitive to rounding.
+    for (const key of ['genus', 'quarter_tubes', 'vertices', 'faces', 'base', 'relations_hold'])
+      assert.deepEqual(wasm[key], native[key], `${name}.${key}`);
+  }
 });
