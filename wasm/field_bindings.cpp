@@ -3,6 +3,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -42,14 +43,17 @@ Session& session_with_mesh() {
   return s;
 }
 
-// { info: singularities_json, directions: Float32Array(3F) (u_T per triangle),
+// { info: singularities_json + seconds, directions: Float32Array(3F) (u_T per triangle),
 //   singularityVertices: Uint32Array, singularityValences: Int32Array }
 val cross_field(const val& options, const val& on_progress) {
   return guard([&] {
     Session& s = session_with_mesh();
     s.param.reset();
+    const auto start = std::chrono::steady_clock::now();
     s.field = design_cross_field(*s.mesh, *s.connectivity, *s.frames, field_options(options),
                                  js_progress(on_progress));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<float> directions;
     directions.reserve(3 * s.field->direction.size());
     for (const Eigen::Vector3d& d : s.field->direction)
@@ -61,7 +65,9 @@ val cross_field(const val& options, const val& on_progress) {
       valences.push_back(sing.valence);
     }
     val result = val::object();
-    result.set("info", json_to_val(singularities_json(*s.field)));
+    nlohmann::ordered_json info = singularities_json(*s.field);
+    info["seconds"] = seconds;
+    result.set("info", json_to_val(info));
     result.set("directions", to_typed_array(directions));
     result.set("singularityVertices", to_typed_array(vertices));
     result.set("singularityValences", to_typed_array(valences));

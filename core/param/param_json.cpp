@@ -2,8 +2,8 @@
 
 namespace tessera {
 
-nlohmann::json singularities_json(const CrossField& field) {
-  nlohmann::json list = nlohmann::json::array();
+nlohmann::ordered_json singularities_json(const CrossField& field) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const Singularity& s : field.singularities)
     list.push_back({{"vertex", s.vertex}, {"index", s.index}, {"valence", s.valence}});
   return {{"euler_characteristic", field.euler_characteristic},
@@ -11,15 +11,15 @@ nlohmann::json singularities_json(const CrossField& field) {
           {"singularities", std::move(list)}};
 }
 
-nlohmann::json param_json(const CrossField& field, const SeamlessParam& param) {
-  nlohmann::json json = singularities_json(field);
+nlohmann::ordered_json param_json(const CrossField& field, const SeamlessParam& param) {
+  nlohmann::ordered_json json = singularities_json(field);
   json["flipped_triangles"] = param.flipped_triangles;
   json["flipped_outside_singular_rings"] = param.flipped_outside_singular_rings;
   json["flipped_before_injectivity"] = param.flipped_before_injectivity;
   json["max_seam_error"] = param.max_seam_error;
   json["energy"] = param.energy;
   json["h"] = param.h;
-  json["seconds"] = nlohmann::json::object();
+  json["seconds"] = nlohmann::ordered_json::object();
   for (const StepTime& t : param.seconds) json["seconds"][t.step] = t.seconds;
   return json;
 }

@@ -10,10 +10,10 @@
 namespace tessera {
 
 // {"euler_characteristic", "index_sum", "singularities": [{"vertex", "index", "valence"}]}.
-nlohmann::json singularities_json(const CrossField& field);
+nlohmann::ordered_json singularities_json(const CrossField& field);
 
 // singularities_json() plus flipped_triangles, flipped_outside_singular_rings,
 // flipped_before_injectivity, max_seam_error, energy, h, seconds (per step).
-nlohmann::json param_json(const CrossField& field, const SeamlessParam& param);
+nlohmann::ordered_json param_json(const CrossField& field, const SeamlessParam& param);
 
 }  // namespace tessera
