@@ -1,6 +1,6 @@
 // The `tessera` commands. Each takes its arguments (after the command name) and returns the exit
-// code: 0 ok, 1 internal error, 2 bad input or usage. Errors are thrown as tessera::Error and turned
-// into exit codes by main(); commands only parse arguments and call core.
+// code: 0 ok, 1 internal error, 2 bad input or usage. Errors are thrown as tessera::Error and
+// turned into exit codes by main(); commands only parse arguments and call core.
 #pragma once
 
 #include <string>

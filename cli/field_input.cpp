@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <memory>
 
 #include "field/design.h"
 #include "field/field_io.h"
@@ -23,15 +22,6 @@ const char* const kFieldInputHelp =
     "  --curvature-weight W blend weight of the curvature directions (default 10)\n"
     "  --field FILE         read the field instead: .rawfield (N F, then N 3D vectors per face)\n"
     "                       or one 'x y z' line per face\n";
-
-Progress stderr_progress() {
-  auto last = std::make_shared<std::string>();
-  return Progress([last](const std::string& stage, double) {
-    if (stage == *last) return;
-    *last = stage;
-    std::fprintf(stderr, "tessera: %s...\n", stage.c_str());
-  });
-}
 
 CrossField field_from_arguments(const Mesh& mesh, const Connectivity& connectivity,
                                 const FaceFrames& frames, const ParsedArgs& args,

@@ -9,6 +9,7 @@
 
 #include "base/progress.h"
 #include "field/cross_field.h"
+#include "stderr_progress.h"
 #include "usage.h"
 
 namespace tessera::cli {
@@ -18,9 +19,6 @@ std::set<std::string> field_input_options();
 
 // Help lines describing those options.
 extern const char* const kFieldInputHelp;
-
-// Prints "tessera: <stage>..." on stderr when a stage starts.
-Progress stderr_progress();
 
 // The field given by --field, or designed with --align / --sharp / --curvature-weight.
 // Throws UsageError for contradicting or malformed options, the readers' errors for the file.

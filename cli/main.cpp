@@ -18,7 +18,8 @@ struct Command {
 
 constexpr Command kCommands[] = {
     {"info", tessera::cli::info_command, "print the figures of a mesh (V, E, F, genus, ...)"},
-    {"convert", tessera::cli::convert_command, "convert a mesh between OBJ, OFF, PLY, STL, glTF/GLB"},
+    {"convert", tessera::cli::convert_command,
+     "convert a mesh between OBJ, OFF, PLY, STL, glTF/GLB"},
     {"regmap", tessera::cli::regmap_command, "regular maps: catalog, info, tiling, surface"},
     {"field", tessera::cli::field_command, "a cross field: singularities, Poincare-Hopf check"},
     {"param", tessera::cli::param_command, "seamless Poisson parameterization (uv per corner)"},
@@ -27,8 +28,9 @@ constexpr Command kCommands[] = {
 void print_help() {
   std::printf("tessera: quad layouts and regular maps\n\nusage: tessera <command> [options]\n\n");
   for (const Command& c : kCommands) std::printf("  %-10s %s\n", c.name, c.summary);
-  std::printf("\n'tessera <command> --help' tells more. Exit codes: 0 ok, 1 internal error, "
-              "2 bad input or usage.\n");
+  std::printf(
+      "\n'tessera <command> --help' tells more. Exit codes: 0 ok, 1 internal error, "
+      "2 bad input or usage.\n");
 }
 
 int run(int argc, char** argv) {
@@ -56,7 +58,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "tessera: error (%s): %s\n", e.kind(), e.what());
     return 2;
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "tessera: error: out of memory; the input is too large for this machine\n");
+    std::fprintf(stderr,
+                 "tessera: error: out of memory; the input is too large for this machine\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tessera: internal error: %s\n", e.what());

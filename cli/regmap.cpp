@@ -19,6 +19,7 @@
 #include "regmap/surface_export.h"
 #include "regmap/tiling_svg.h"
 #include "regmap/triangle_tiling.h"
+#include "stderr_progress.h"
 #include "usage.h"
 
 namespace tessera::cli {
@@ -319,18 +320,6 @@ regmap::SurfaceOptions surface_options(const ParsedArgs& parsed) {
       parsed.count("--iterations", static_cast<std::size_t>(options.relax.iterations)));
   options.find_self_intersections = !parsed.has("--no-self-intersections");
   return options;
-}
-
-// Progress on stderr: each stage at every quarter.
-Progress stderr_progress() {
-  return Progress(
-      [last = std::string(), quarter = -1](const std::string& stage, double fraction) mutable {
-        const int now = static_cast<int>(fraction * 4);
-        if (stage == last && now == quarter) return;
-        last = stage;
-        quarter = now;
-        std::fprintf(stderr, "tessera: %s %d%%\n", stage.c_str(), now * 25);
-      });
 }
 
 int surface(const Args& args) {
