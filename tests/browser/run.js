@@ -3,6 +3,7 @@ import { runTests } from './harness.js';
 import './page.test.js';
 import './regmap.test.js';
 import './field.test.js';
+import './surface.test.js';
 
 const ok = await runTests(process.argv[2] ?? '');
 process.exit(ok ? 0 : 1);

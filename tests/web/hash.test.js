@@ -10,7 +10,8 @@ describe('parseHash', () => {
 
   it('reads every shareable key', () => {
     const { state, problems } = parseHash(
-      '#mode=regmap&sample=genus2&shading=smooth&wireframe=1&map=R3.1&field=1&align=curvature&sharp=180&h=0.05&texture=grid',
+      '#mode=regmap&sample=genus2&shading=smooth&wireframe=1&map=R3.1&view=surface&base=relax&radius=0.2&smoothness=8' +
+        '&field=1&align=curvature&sharp=180&h=0.05&texture=grid',
     );
     expect(problems).toEqual([]);
     expect(state).toEqual({
@@ -19,6 +20,10 @@ describe('parseHash', () => {
       shading: 'smooth',
       wireframe: true,
       map: 'R3.1',
+      view: 'surface',
+      base: 'relax',
+      radius: 0.2,
+      smoothness: 8,
       field: true,
       align: 'curvature',
       sharp: 180,
@@ -35,6 +40,17 @@ describe('parseHash', () => {
       expect(problems, hash).toEqual([`Link setting "${hash.split('=')[0]}" has an invalid value and was ignored.`]);
     }
     expect(parseHash('#h=1e-3&sharp=1').state).toMatchObject({ h: 0.001, sharp: 1 });
+  });
+
+  it('checks the surface view and its options as the form does, and drops invalid ones with a note', () => {
+    const refused = ['view=3d', 'base=octahedron', 'radius=-0.1', 'radius=0.6', 'radius=1e-2', 'radius=.', 'smoothness=1', 'smoothness=17', 'smoothness=4.5'];
+    for (const hash of refused) {
+      const { state, problems } = parseHash(`#${hash}`);
+      expect(state, hash).toEqual(DEFAULT_STATE);
+      expect(problems, hash).toEqual([`Link setting "${hash.split('=')[0]}" has an invalid value and was ignored.`]);
+    }
+    expect(parseHash('#radius=.5&smoothness=16&base=platonic').state).toMatchObject({ radius: 0.5, smoothness: 16, base: 'platonic' });
+    expect(parseHash('#radius=0').state.radius).toBe(0);
   });
 
   it('drops malformed values with a note and keeps the defaults', () => {
@@ -104,6 +120,10 @@ describe('formatHash', () => {
       shading: 'smooth',
       wireframe: true,
       map: "R3.1'",
+      view: 'surface',
+      base: 'platonic',
+      radius: 0.125,
+      smoothness: 2,
       field: true,
       align: 'curvature',
       sharp: 90,
@@ -111,6 +131,12 @@ describe('formatHash', () => {
       texture: 'checker',
     };
     expect(parseHash(formatHash(state))).toEqual({ state, problems: [] });
+  });
+
+  it('writes the view and the surface options only when they differ from the defaults', () => {
+    const regmap = { ...DEFAULT_STATE, mode: 'regmap', map: 'R2.4' };
+    expect(formatHash({ ...regmap, view: 'surface' })).toBe('#mode=regmap&map=R2.4&view=surface');
+    expect(formatHash({ ...regmap, view: 'surface', radius: 0.2, smoothness: 4 })).toBe('#mode=regmap&map=R2.4&view=surface&radius=0.2');
   });
 
   it('writes Field options only when they differ from the defaults', () => {

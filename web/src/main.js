@@ -11,6 +11,7 @@ import { formatHash, parseHash } from './ui/hash.js';
 import { QuadLayoutMode } from './ui/quad-layout-mode.js';
 import { RegularMapMode } from './ui/regmap-mode.js';
 import { TilingView } from './ui/tiling-view.js';
+import { SurfaceView } from './ui/surface-view.js';
 import { MODES } from './ui/modes.js';
 
 const byId = (id) => document.getElementById(id);
@@ -31,11 +32,39 @@ function updateState(partial) {
   history.replaceState(null, '', formatHash(state));
 }
 
-// The modes by id; each starts the first time it is shown. The Quad layout mode needs the 3D view.
+let viewer;
+try {
+  viewer = new Viewer(byId('viewport'), {
+    onContextLost: () =>
+      status.showError({
+        kind: 'internal',
+        message: 'The 3D view lost its graphics context (the GPU was reset or is out of memory). It comes back by itself when the browser allows; reload the page if it does not.',
+      }),
+  });
+} catch (error) {
+  status.showError({ kind: 'internal', message: `The 3D view could not start (${error.message}). Tessera needs a browser with WebGL 2.` });
+}
+
+const request = (label, command, payload) =>
+  jobs.run(label, (onProgress) => client.request(command, payload, { onProgress }));
+
+// The modes by id; each starts the first time it is shown. The Quad layout mode and the Regular
+// maps mode's surface need the 3D view.
 const modes = {
   regmap: new RegularMapMode({
     panel: byId('regmap-panel'),
     view: new TilingView(byId('tiling-view')),
+    viewChoices: [...byId('regmap-views').querySelectorAll('input')],
+    surface: viewer
+      ? new SurfaceView({
+          root: byId('regmap-panel').querySelector('[data-role=surface-view]'),
+          note: byId('surface-note'),
+          viewer,
+          status,
+          request,
+          onStateChange: updateState,
+        })
+      : null,
     client,
     jobs,
     status,
@@ -53,25 +82,13 @@ const selectTab = createTabs(byId('modes'), MODES, (mode) => {
 function showMode() {
   const id = state.mode;
   selectTab(id);
+  viewer?.showScene(MODES.find((mode) => mode.id === id).scene);
   for (const part of document.querySelectorAll('[data-for-mode]')) part.hidden = part.dataset.forMode !== id;
   const mode = modes[id];
   if (!mode) return Promise.resolve();
   if (started.has(id)) return mode.applyState(state);
   started.add(id);
   return mode.start(state);
-}
-
-let viewer;
-try {
-  viewer = new Viewer(byId('viewport'), {
-    onContextLost: () =>
-      status.showError({
-        kind: 'internal',
-        message: 'The 3D view lost its graphics context (the GPU was reset or is out of memory). It comes back by itself when the browser allows; reload the page if it does not.',
-      }),
-  });
-} catch (error) {
-  status.showError({ kind: 'internal', message: `The 3D view could not start (${error.message}). Tessera needs a browser with WebGL 2.` });
 }
 
 let viewControls;

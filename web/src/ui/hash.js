@@ -4,6 +4,7 @@
 
 import { MODES } from './modes.js';
 import { FIELD_DEFAULTS, FIELD_PARSERS } from './field-options.js';
+import { SURFACE_DEFAULTS, SURFACE_PARSERS } from './surface-options.js';
 
 const MAX_HASH_LENGTH = 2000;
 
@@ -20,6 +21,9 @@ const FIELDS = Object.freeze({
   shading: oneOf(['flat', 'smooth']),
   wireframe: flag,
   map: mapName,
+  // The Regular maps mode's view (2D tiling or 3D surface, built on opening) and surface options.
+  view: oneOf(['tiling', 'surface']),
+  ...SURFACE_PARSERS,
   // The Field view: shown (computed on opening the link), its options, the texture on the surface.
   field: flag,
   ...FIELD_PARSERS,
@@ -32,6 +36,8 @@ export const DEFAULT_STATE = Object.freeze({
   shading: 'flat',
   wireframe: false,
   map: null,
+  view: 'tiling',
+  ...SURFACE_DEFAULTS,
   field: false,
   ...FIELD_DEFAULTS,
   texture: 'off',

@@ -12,14 +12,16 @@ const SEARCH_FIELDS = ['name', 'genus', 'type'];
 const MAX_DRAWN_TRIANGLES = 16_000;
 
 /**
- * The Regular maps mode: the catalog with its search, a map's figures and its tiling, and maps
- * typed as presentations. Every name and presentation is user text and is shown as text only.
- * panel: the mode's section of the page; view (TilingView), client (WorkerClient), jobs (Jobs),
- * status (Status); onStateChange(partial state) when what a link should share changes.
+ * The Regular maps mode: the catalog with its search, a map's figures, its tiling (the 2D view) or
+ * its regular surface (the 3D view), and maps typed as presentations. Every name and presentation
+ * is user text and is shown as text only.
+ * panel: the mode's section of the page; view (TilingView); viewChoices: the radio buttons of the
+ * views ('tiling', 'surface'); surface (SurfaceView, or null without a 3D view); client (WorkerClient), jobs (Jobs), status (Status); onStateChange(partial state)
+ * when what a link should share changes.
  */
 export class RegularMapMode {
-  constructor({ panel, view, client, jobs, status, onStateChange }) {
-    Object.assign(this, { panel, view, client, jobs, status, onStateChange });
+  constructor({ panel, view, viewChoices, surface, client, jobs, status, onStateChange }) {
+    Object.assign(this, { panel, view, viewChoices, surface, client, jobs, status, onStateChange });
     this.part = (role) => panel.querySelector(`[data-role=${role}]`);
     this.rows = null; // the catalog, once read
     this.shown = null; // { name, info }: the map on screen; name is null for a typed presentation
@@ -36,6 +38,10 @@ export class RegularMapMode {
     this.part('presentation').addEventListener('keydown', (event) => {
       if (event.key === 'Enter' && (event.ctrlKey || event.metaKey)) this.runPresentation();
     });
+    for (const choice of this.viewChoices) {
+      choice.disabled = choice.value === 'surface' && !surface;
+      choice.addEventListener('change', () => this.chooseView(choice.value));
+    }
   }
 
   /** Reads the catalog and shows state.map (or the default map). */
@@ -49,10 +55,13 @@ export class RegularMapMode {
 
   /**
    * Shows the map a link names; without a valid one, keeps the map on screen (or the default).
-   * Reads the catalog first if an earlier attempt failed.
+   * Opens the link's view, in the 3D view with the link's surface options. Reads the catalog first
+   * if an earlier attempt failed.
    */
   async applyState(state) {
     if (!this.rows) return this.start(state);
+    this.surface?.setOptions(state);
+    this.setView(state.view);
     const { map } = state;
     const known = map !== null && findMap(this.rows, map) !== undefined;
     if (known && map !== this.shown?.name) await this.showMap(map);
@@ -63,22 +72,40 @@ export class RegularMapMode {
         `It holds ${count(this.rows.length)} maps, ${this.rows[0].name} to ${this.rows.at(-1).name} (a prime names the dual).`,
       );
     }
+    await this.surface?.update();
+  }
+
+  /** 'tiling' or 'surface' (the 2D tiling, unless there is a 3D view). */
+  setView(view) {
+    const shown = this.surface ? view : 'tiling';
+    for (const choice of this.viewChoices) choice.checked = choice.value === shown;
+    this.view.setVisible(shown === 'tiling');
+    this.surface?.setActive(shown === 'surface');
+  }
+
+  async chooseView(view) {
+    this.setView(view);
+    this.onStateChange({ view });
+    await this.surface?.update();
   }
 
   async showMap(name) {
     const result = await this.request(`Enumerating ${name} and drawing its tiling`, COMMANDS.regmapTiling, { map: name });
-    if (result) await this.show(result, name);
+    if (result) await this.show(result, name, name);
   }
 
   async runPresentation() {
     const text = this.part('presentation').value.trim();
     const label = 'Enumerating the typed presentation and drawing its tiling';
     const result = await this.request(label, COMMANDS.regmapTiling, { map: text });
-    if (result) await this.show(result, null);
+    if (result) await this.show(result, null, text);
   }
 
-  /** A tiling result from the worker, for a catalog map (name) or a typed presentation (null). */
-  async show(result, name) {
+  /**
+   * A tiling result from the worker, for a catalog map (name) or a typed presentation (null); spec:
+   * the map as the core takes it (the name or the presentation's text).
+   */
+  async show(result, name, spec) {
     const title = name ?? `${result.info.name || 'A map'} (typed presentation)`;
     try {
       await this.drawTiling(result, name ?? result.info.name);
@@ -94,6 +121,7 @@ export class RegularMapMode {
     if (name !== null) dual.textContent = `Show its dual, ${dualName(name)}`;
     this.list.setChosen(name);
     this.onStateChange({ map: name });
+    await this.surface?.setMap({ spec, name: name ?? (result.info.name || 'typed map') });
   }
 
   drawTiling({ svg, polygon }, name) {

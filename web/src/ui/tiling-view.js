@@ -29,6 +29,7 @@ export function zoomAbout(view, factor, px, py, fitScale) {
 /** root: the element holding [data-role=stage|image|note|zoom-in|zoom-out|fit|download-svg]. */
 export class TilingView {
   constructor(root) {
+    this.root = root;
     this.part = (role) => root.querySelector(`[data-role=${role}]`);
     this.stage = this.part('stage');
     this.image = this.part('image');
@@ -86,6 +87,11 @@ export class TilingView {
     this.keep({ svg, name, url: null });
     this.part('note').textContent = note;
     this.setDrawn(false);
+  }
+
+  /** Shows or hides the whole view (the image keeps its zoom). */
+  setVisible(visible) {
+    this.root.hidden = !visible;
   }
 
   keep(shown) {

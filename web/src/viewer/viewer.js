@@ -5,6 +5,7 @@ import {
   Color,
   DirectionalLight,
   DoubleSide,
+  Group,
   LineBasicMaterial,
   LineSegments,
   Mesh,
@@ -18,13 +19,17 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { uvTexture } from './textures.js';
 
 export const BACKGROUND = '#23272e';
+export const SCENES = Object.freeze(['mesh', 'surface']);
 const SURFACE = '#d9c3a0';
 const EDGES = '#1b1d22';
 
 /**
- * The 3D view: one surface mesh with optional polygon edges, orbit controls, rendered on demand.
- * Drawn with the mesh: named layers of what the stages found on it (crosses, singularities), and
- * the mesh again with texture coordinates that show a parameterization in place of the plain one.
+ * The 3D view: orbit controls, rendered on demand, drawing one of two scenes (SCENES), each with the
+ * camera where it was left:
+ * - 'mesh': one surface mesh with optional polygon edges; drawn with it, named layers of what the
+ *   stages found on it (crosses, singularities), and the mesh again with texture coordinates that
+ *   show a parameterization in place of the plain one;
+ * - 'surface': a smooth surface coloured per vertex (a regular map's tubified surface).
  * container: an element the canvas fills; onContextLost() when the browser takes the GPU context
  * away (three.js rebuilds what it needs once the context is restored). Throws if WebGL cannot start.
  */
@@ -43,6 +48,10 @@ export class Viewer {
     headlight.position.set(0.4, 0.6, 1);
     this.camera.add(headlight);
     this.scene.add(this.camera, new AmbientLight('#ffffff', 0.9));
+    // name -> { root: Group, bounds: bounding sphere of what it shows, view: the camera left there }
+    this.scenes = new Map(SCENES.map((name) => [name, { root: new Group(), bounds: null, view: null }]));
+    this.shownScene = 'mesh';
+    this.scene.add(this.scenes.get('mesh').root);
 
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.requestRender());
@@ -66,6 +75,8 @@ export class Viewer {
     this.uvSurface = null; // the mesh as separate corners with texture coordinates
     this.texture = 'off';
     this.layers = new Map(); // name -> object
+    this.coloredMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.6, metalness: 0, side: DoubleSide });
+    this.coloredSurface = null;
 
     this.renderPending = false;
     new ResizeObserver(() => this.resize(container)).observe(container);
@@ -88,8 +99,53 @@ export class Viewer {
     this.edges = new LineSegments(edgeGeometry, this.edgeMaterial);
     this.edges.visible = this.wireframe;
 
-    this.scene.add(this.surface, this.edges);
-    this.frame(geometry.boundingSphere);
+    this.meshRoot().add(this.surface, this.edges);
+    this.setBounds('mesh', geometry.boundingSphere);
+  }
+
+  /**
+   * Shows a surface coloured per vertex ({ positions, normals, colors, triangles }) in the scene
+   * 'surface' and frames it there; null removes it.
+   */
+  showColoredSurface(surface) {
+    remove(this.coloredSurface);
+    this.coloredSurface = null;
+    if (!surface) return this.setBounds('surface', null);
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new BufferAttribute(surface.positions, 3));
+    geometry.setAttribute('normal', new BufferAttribute(surface.normals, 3));
+    geometry.setAttribute('color', new BufferAttribute(surface.colors, 3));
+    geometry.setIndex(new BufferAttribute(surface.triangles, 1));
+    geometry.computeBoundingSphere();
+    this.coloredSurface = new Mesh(geometry, this.coloredMaterial);
+    this.scenes.get('surface').root.add(this.coloredSurface);
+    this.setBounds('surface', geometry.boundingSphere);
+  }
+
+  /** Draws the scene `name` of SCENES, with the camera where it was left (or framing what it shows). */
+  showScene(name) {
+    if (name === this.shownScene) return;
+    const [shown, next] = [this.scenes.get(this.shownScene), this.scenes.get(name)];
+    shown.view = { position: this.camera.position.clone(), target: this.controls.target.clone() };
+    this.scene.remove(shown.root);
+    this.scene.add(next.root);
+    this.shownScene = name;
+    if (next.view) this.look(next.view);
+    else if (next.bounds) this.frame(next.bounds);
+    this.requestRender();
+  }
+
+  meshRoot() {
+    return this.scenes.get('mesh').root;
+  }
+
+  // What a scene shows has changed: frame it if it is drawn, else when it is drawn next.
+  setBounds(name, bounds) {
+    const scene = this.scenes.get(name);
+    scene.bounds = bounds;
+    scene.view = null;
+    if (name === this.shownScene && bounds) this.frame(bounds);
+    this.requestRender();
   }
 
   /** 'flat': one normal per triangle; 'smooth': interpolated vertex normals. */
@@ -103,11 +159,11 @@ export class Viewer {
 
   /** Shows `object` as the layer `name` in place of the layer's previous object; null removes it. */
   setLayer(name, object) {
-    remove(this.scene, this.layers.get(name), { withMaterial: true });
+    remove(this.layers.get(name), { withMaterial: true });
     this.layers.delete(name);
     if (object) {
       this.layers.set(name, object);
-      this.scene.add(object);
+      this.meshRoot().add(object);
     }
     this.requestRender();
   }
@@ -123,7 +179,7 @@ export class Viewer {
    * drawn with the texture of setTexture in place of the plain surface; null removes it.
    */
   setUvSurface(corners) {
-    remove(this.scene, this.uvSurface);
+    remove(this.uvSurface);
     this.uvSurface = null;
     if (corners) {
       const geometry = new BufferGeometry();
@@ -131,7 +187,7 @@ export class Viewer {
       geometry.setAttribute('normal', new BufferAttribute(corners.normals, 3));
       geometry.setAttribute('uv', new BufferAttribute(corners.uv, 2));
       this.uvSurface = new Mesh(geometry, this.texturedMaterial);
-      this.scene.add(this.uvSurface);
+      this.meshRoot().add(this.uvSurface);
     }
     this.showTexture();
   }
@@ -161,7 +217,7 @@ export class Viewer {
 
   /** Removes the mesh and everything drawn with it. */
   clear() {
-    for (const object of [this.surface, this.edges]) remove(this.scene, object);
+    for (const object of [this.surface, this.edges]) remove(object);
     this.surface = null;
     this.edges = null;
     for (const name of [...this.layers.keys()]) this.setLayer(name, null);
@@ -174,11 +230,17 @@ export class Viewer {
     const halfWidth = Math.atan(Math.tan(halfHeight) * this.camera.aspect);
     const distance = (radius || 1) / Math.sin(Math.min(halfHeight, halfWidth));
     const direction = new Vector3(0.55, 0.45, 1).normalize();
-    this.camera.position.copy(center).addScaledVector(direction, distance);
+    this.look({ position: center.clone().addScaledVector(direction, distance), target: center });
+  }
+
+  // Puts the camera at `position` looking at `target`, with near and far planes for that distance.
+  look({ position, target }) {
+    const distance = position.distanceTo(target);
+    this.camera.position.copy(position);
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;
     this.camera.updateProjectionMatrix();
-    this.controls.target.copy(center);
+    this.controls.target.copy(target);
     this.controls.update();
     this.requestRender();
   }
@@ -202,9 +264,9 @@ export class Viewer {
   }
 }
 
-function remove(scene, object, { withMaterial = false } = {}) {
+function remove(object, { withMaterial = false } = {}) {
   if (!object) return;
-  scene.remove(object);
+  object.removeFromParent();
   object.geometry.dispose();
   if (withMaterial) object.material.dispose();
   object.dispose?.(); // the per-instance buffers of an InstancedMesh

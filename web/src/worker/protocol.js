@@ -35,6 +35,13 @@ export const COMMANDS = Object.freeze({
   // petrie, seconds }.
   regmapCatalog: 'regmapCatalog', // payload: none -> { rows: [{ name, genus, p, q, petrie, order, vertices, edges, faces }] }
   regmapTiling: 'regmapTiling', // payload: { map } -> { info, svg, polygon: { triangles, boundaryPairs, euler, boundaryCycles } }
+  // The regular surface of a map (tubified edge graph). options: { base: 'auto'|'platonic'|'relax',
+  // tubeRadius (0: automatic), smoothness (quads across a quarter tube) }; stats: the core's figures
+  // (genus, euler_characteristic, quarter_tubes, closed, oriented, relations_hold, ...); surface: the
+  // mesh coloured by quarter tube { positions, normals, colors, triangles } (see surface-display.js).
+  regmapSurface: 'regmapSurface', // payload: { map, options } -> { info, stats, surface }
+  // The surface of { map, options } as GLB; a worker whose core holds another surface builds it again.
+  regmapSurfaceGlb: 'regmapSurfaceGlb', // payload: { map, options } -> { bytes }
 });
 
 /** Error kinds that the page adds to the core's. */

@@ -10,6 +10,13 @@ export const PARAM_STAGES = Object.freeze([
   ['solve', 'Solving the Poisson system'],
   ['injectivity', 'Injectivity constraints near singularities (GLPK)'],
 ]);
+// The core's stages of a regular surface, in order.
+export const SURFACE_STAGES = Object.freeze([
+  ['hyperbolic tiling', 'Growing the hyperbolic tiling'],
+  ['relaxation', 'Relaxing the edge graph in space'],
+  ['tubification', 'Tubifying the edges into quarter tubes'],
+  ['self-intersections', 'Searching for self-intersections'],
+]);
 
 /**
  * A plan that gives the stages [coreStage, label] consecutive parts of the bar from `from` to

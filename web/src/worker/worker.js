@@ -3,7 +3,8 @@
 import { COMMANDS, PAGE_ERROR_KINDS, errorEvent, ownedBuffers, progressEvent, resultEvent } from './protocol.js';
 import { polygonEdges, vertexNormals } from './display.js';
 import { cornerArrays, crossGlyphs, markerRadius, vertexPoints } from './field-display.js';
-import { FIELD_STAGES, PARAM_STAGES, planStages, stagedProgress } from './stages.js';
+import { tiledSurface } from './surface-display.js';
+import { FIELD_STAGES, PARAM_STAGES, SURFACE_STAGES, planStages, stagedProgress } from './stages.js';
 
 // The wasm build is a static file (web/public/wasm), not a source module: an absolute URL keeps
 // Vite's dev server from treating the import as one of its own.
@@ -11,6 +12,7 @@ const CORE_URL = new URL(`${import.meta.env.BASE_URL}wasm/tessera.mjs`, self.loc
 
 let core = null; // Promise of the wasm module, created on first use, dropped after a trap
 const catalogs = new WeakMap(); // wasm module -> its catalog rows, read into it once
+const surfaces = new WeakMap(); // wasm module -> the key (surfaceKey) of the last surface it built
 // The mesh the module's session holds (the core keeps the last mesh it built), with the arrays the
 // field view is drawn from: { module, id, positions, triangles, normals, fieldKey }, where id is the
 // page's number of the mesh and fieldKey names the options of the session's cross field.
@@ -104,7 +106,40 @@ const handlers = {
     progress('Enumerating the group and drawing its tiling', 0.3);
     return module.regmapTiling(String(map));
   },
+
+  async [COMMANDS.regmapSurface]({ map, options }, progress) {
+    const result = await buildSurface(map, options, progress, 0.9);
+    progress('Preparing the view', 0.9);
+    const { info, stats } = result;
+    return { info, stats, surface: tiledSurface(result) };
+  },
+
+  async [COMMANDS.regmapSurfaceGlb]({ map, options }, progress) {
+    progress('Starting the geometry core', 0);
+    const module = await loadCore();
+    if (surfaces.get(module) !== surfaceKey(map, options)) await buildSurface(map, options, progress, 0.8);
+    progress('Writing the GLB file', 0.8);
+    return { bytes: module.regmapSurfaceGlb() };
+  },
 };
+
+// Builds the surface of a map in the core, its stages on the bar up to `to`, and returns the core's
+// result. The core keeps the surface for its GLB.
+async function buildSurface(map, options, progress, to) {
+  progress('Starting the geometry core', 0);
+  const module = await loadCore();
+  await catalogOf(module);
+  progress('Enumerating the group', 0.02);
+  surfaces.delete(module);
+  // Shares of the bar as the stages' times for R29.1 and R3.1 (the relaxation dominates).
+  const plan = planStages(SURFACE_STAGES, [0.1, 6, 1, 1], 0.03, to);
+  const { base, tubeRadius, smoothness } = options;
+  const result = module.regmapSurface(String(map), { base, tubeRadius, smoothness }, stagedProgress(plan, progress));
+  surfaces.set(module, surfaceKey(map, options));
+  return result;
+}
+
+const surfaceKey = (map, { base, tubeRadius, smoothness }) => JSON.stringify([String(map), base, tubeRadius, smoothness]);
 
 // The shipped catalog, bundled with the page as text (a chunk of its own, loaded on first use) and
 // read by the core, which also needs it to resolve map names.
