@@ -3,63 +3,17 @@
 #include <algorithm>
 #include <span>
 
+#include "matching/adjacency.h"
+
 namespace tessera::matching {
 
 namespace {
 
-// Compressed sorted adjacency lists.
-struct Adjacency {
-  std::vector<std::uint32_t> start;  // size n + 1
-  std::vector<std::uint32_t> list;
-
-  std::span<const std::uint32_t> of(std::uint32_t e) const {
-    return {list.data() + start[e], list.data() + start[e + 1]};
-  }
-};
-
-Adjacency adjacency_from_pairs(std::size_t n,
-                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  Adjacency adj;
-  adj.start.assign(n + 1, 0);
-  for (const auto& [a, b] : pairs) ++adj.start[a + 1];
-  for (std::size_t i = 0; i < n; ++i) adj.start[i + 1] += adj.start[i];
-  adj.list.reserve(pairs.size());
-  for (const auto& [a, b] : pairs) adj.list.push_back(b);
-  return adj;
-}
-
-std::vector<std::pair<std::uint32_t, std::uint32_t>> conflict_pairs(const MatchingProblem& p) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  pairs.reserve(2 * p.conflicts.size());
-  for (const ConflictPair& c : p.conflicts) {
-    pairs.emplace_back(c.first, c.second);
-    pairs.emplace_back(c.second, c.first);
-  }
-  return pairs;
-}
-
-// Conflict pairs plus pairs of edges with a common node.
-Adjacency exclusion_graph(const MatchingProblem& p) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = conflict_pairs(p);
-  std::vector<std::vector<std::uint32_t>> incident(p.node_count());
-  for (std::uint32_t e = 0; e < p.edges.size(); ++e) {
-    incident[p.edges[e].u].push_back(e);
-    incident[p.edges[e].v].push_back(e);
-  }
-  for (const std::vector<std::uint32_t>& star : incident)
-    for (std::uint32_t a : star)
-      for (std::uint32_t b : star)
-        if (a != b) pairs.emplace_back(a, b);
-  return adjacency_from_pairs(p.edges.size(), pairs);
-}
-
 class CliqueCover {
  public:
   explicit CliqueCover(const MatchingProblem& problem)
-      : exclusion_(exclusion_graph(problem)),
-        conflicts_(conflicts_of(problem)),
+      : exclusion_(exclusive_edges(problem)),
+        conflicts_(conflicting_edges(problem)),
         covered_(conflicts_.list.size(), 0) {}
 
   std::vector<Clique> run() {
@@ -77,11 +31,6 @@ class CliqueCover {
   }
 
  private:
-  static Adjacency conflicts_of(const MatchingProblem& problem) {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = conflict_pairs(problem);
-    return adjacency_from_pairs(problem.edges.size(), pairs);
-  }
-
   // Position of the conflict (a, b) in conflicts_.list, or npos.
   std::size_t conflict_slot(std::uint32_t a, std::uint32_t b) const {
     const auto list = conflicts_.of(a);

@@ -177,11 +177,17 @@ bool arcs_cross(const Arc& p, const Arc& q, double side) {
   return false;
 }
 
-void add_illegal_crossings(const std::vector<Arc>& arcs, double side, MatchingProblem& problem) {
+// Same-aligned crossings are illegal (Sec. 4.6); a crossing of differently aligned arcs is made
+// illegal with probability `mixed_rate` (Remark 4.1: a frame elsewhere on a self-crossing line can
+// see it as illegal).
+void add_illegal_crossings(const std::vector<Arc>& arcs, double side, double mixed_rate,
+                           Random& random, MatchingProblem& problem) {
   for (std::uint32_t e = 0; e < arcs.size(); ++e)
-    for (std::uint32_t f = e + 1; f < arcs.size(); ++f)
-      if (arcs[e].alignment == arcs[f].alignment && arcs_cross(arcs[e], arcs[f], side))
+    for (std::uint32_t f = e + 1; f < arcs.size(); ++f) {
+      if (!arcs_cross(arcs[e], arcs[f], side)) continue;
+      if (arcs[e].alignment == arcs[f].alignment || random.unit() < mixed_rate)
         problem.conflicts.push_back({e, f});
+    }
 }
 
 }  // namespace
@@ -233,7 +239,7 @@ MatchingProblem synthetic_layout_instance(const SyntheticLayoutSpec& spec) {
           {from, {from.x + c.displacement.x, from.y + c.displacement.y}, ports[a].direction % 2});
     }
   }
-  add_illegal_crossings(arcs, side, problem);
+  add_illegal_crossings(arcs, side, spec.mixed_crossing_rate, random, problem);
   return problem;
 }
 

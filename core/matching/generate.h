@@ -37,6 +37,10 @@ struct SyntheticLayoutSpec {
   // lengths of separatrices obey no triangle inequality of the plane; without noise, swapping the
   // ends of two crossing edges would always be cheaper and conflicts would never bind.
   double weight_noise = 0.3;
+  // The share of crossings of an x- and a y-aligned edge that are illegal all the same (Remark 4.1,
+  // self-crossing lines). Without them the x- and y-aligned halves would be independent problems,
+  // which real port graphs are not: chart rotations around singularities mix the two.
+  double mixed_crossing_rate = 0.05;
   std::uint64_t seed = 1;
 };
 

@@ -3,6 +3,7 @@
 #include <glpk.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -10,6 +11,7 @@
 #include <memory>
 
 #include "base/error.h"
+#include "matching/adjacency.h"
 #include "matching/cliques.h"
 
 namespace tessera::matching {
@@ -33,7 +35,7 @@ int milliseconds_left(Clock::time_point start, double limit) {
 }
 
 // Adds the row sum_{e in edges} x_e (= or <=) 1; GLPK numbers rows and columns from 1.
-void add_row(glp_prob* lp, const std::vector<std::uint32_t>& edges, bool equality) {
+void add_row(glp_prob* lp, std::span<const std::uint32_t> edges, bool equality) {
   const int row = glp_add_rows(lp, 1);
   glp_set_row_bnds(lp, row, equality ? GLP_FX : GLP_UP, 1.0, 1.0);
   std::vector<int> index(edges.size() + 1);
@@ -50,18 +52,14 @@ GlpkProblem build_model(const MatchingProblem& problem, bool clique_rows) {
     glp_set_col_kind(lp.get(), static_cast<int>(e) + 1, GLP_BV);                   // (5.4)
     glp_set_obj_coef(lp.get(), static_cast<int>(e) + 1, problem.edges[e].weight);  // (5.1)
   }
-  std::vector<std::vector<std::uint32_t>> incident(problem.node_count());
-  for (std::uint32_t e = 0; e < problem.edges.size(); ++e) {
-    incident[problem.edges[e].u].push_back(e);
-    incident[problem.edges[e].v].push_back(e);
-  }
-  for (std::size_t v = 0; v < problem.node_count(); ++v)  // (5.2)
-    add_row(lp.get(), incident[v], problem.is_virtual[v] == 0);
+  const Adjacency incident = incident_edges(problem);
+  for (std::uint32_t v = 0; v < problem.node_count(); ++v)  // (5.2)
+    add_row(lp.get(), incident.of(v), problem.is_virtual[v] == 0);
   if (clique_rows) {
     for (const Clique& clique : conflict_cliques(problem)) add_row(lp.get(), clique, false);
   } else {
     for (const ConflictPair& c : problem.conflicts)  // (5.3)
-      add_row(lp.get(), {c.first, c.second}, false);
+      add_row(lp.get(), std::array{c.first, c.second}, false);
   }
   return lp;
 }
@@ -181,7 +179,9 @@ MatchingResult solve_with_glpk(const MatchingProblem& problem, const GlpkConfig&
       parameters.mir_cuts = parameters.gmi_cuts = parameters.cov_cuts = parameters.clq_cuts =
           GLP_ON;
     }
+    const int terminal = glp_term_out(GLP_OFF);  // the clique cut generator talks regardless
     const int code = glp_intopt(lp.get(), &parameters);
+    glp_term_out(terminal);
     if (s.error) std::rethrow_exception(s.error);
     if (code != 0 && code != GLP_ETMLIM && code != GLP_ESTOP)
       throw Error("GLPK's branch-and-bound failed (code " + std::to_string(code) + ")");

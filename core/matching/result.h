@@ -24,6 +24,10 @@ struct MatchingResult {
   double lower_bound = 0.0;          // no matching is cheaper; +infinity when infeasible
   double seconds = 0.0;              // wall time of the solve
   std::uint64_t nodes = 0;           // branch-and-bound nodes explored
+  // When infeasible because no matching of G covers every port, conflicts aside: the ports that
+  // some maximum matching misses (Gallai-Edmonds set D, blossom.h). The layout stage grows its
+  // separatrices around them (thesis Sec. 5.1). Empty otherwise, and from the GLPK solvers.
+  std::vector<std::uint32_t> unmatchable_ports;
   bool has_solution() const {
     return status == SolveStatus::optimal || status == SolveStatus::feasible;
   }

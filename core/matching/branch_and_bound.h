@@ -1,0 +1,41 @@
+// The exact solver's search: LP-based branch-and-bound on P1 (thesis (5.1)-(5.4)).
+//
+// Each node solves the relaxation (lp_relaxation.h) with the dual simplex method from its parent's
+// basis and is pruned when its bound reaches the incumbent. Edges whose reduced cost alone lifts
+// the bound to the incumbent are fixed to 0 (or to 1) in the node's subtree (reduced-cost fixing).
+// A fractional edge e is branched on: x_e = 1 first (it settles the edge's two ports and every
+// conflict pair it is in), explored depth-first until that dive ends, then x_e = 0; the next dive
+// starts at the open node of least bound. New incumbents are improved by local search.
+// The search ends when no open node can beat the incumbent (optimal; the gap is closed) or at the
+// deadline, with the least open bound as the proven lower bound.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include "base/progress.h"
+#include "matching/incumbent.h"
+#include "matching/lp_relaxation.h"
+#include "matching/problem.h"
+
+namespace tessera::matching {
+
+struct SearchResult {
+  Incumbent best;
+  double lower_bound = 0.0;  // proven; equals best.objective when complete and found
+  bool complete = false;     // every node was settled
+  std::uint64_t nodes = 0;
+};
+
+// `lp` holds the root relaxation with the preprocessing's fixings `root` applied; `start` is the
+// best matching known so far (or none).
+SearchResult branch_and_bound(const MatchingProblem& problem, LpRelaxation& lp,
+                              const std::vector<Fixed>& root, const IncumbentSearch& heuristics,
+                              Incumbent start, std::chrono::steady_clock::time_point deadline,
+                              const Progress& progress);
+
+// Pruning tolerance: a node whose bound is within this of the incumbent cannot improve it.
+double bound_tolerance(double incumbent);
+
+}  // namespace tessera::matching

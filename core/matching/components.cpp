@@ -1,0 +1,63 @@
+#include "matching/components.h"
+
+#include <numeric>
+
+namespace tessera::matching {
+
+namespace {
+
+class UnionFind {
+ public:
+  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  std::uint32_t find(std::uint32_t i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+    return i;
+  }
+  void join(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<std::uint32_t> parent_;
+};
+
+}  // namespace
+
+std::vector<Component> split_components(const MatchingProblem& problem) {
+  UnionFind sets(problem.node_count());
+  for (const MatchingEdge& e : problem.edges) sets.join(e.u, e.v);
+  for (const ConflictPair& c : problem.conflicts)
+    sets.join(problem.edges[c.first].u, problem.edges[c.second].u);
+  std::vector<std::int64_t> component_of_root(problem.node_count(), -1);
+  std::vector<std::uint32_t> local_node(problem.node_count());
+  std::vector<Component> components;
+  for (std::uint32_t v = 0; v < problem.node_count(); ++v) {
+    const std::uint32_t root = sets.find(v);
+    if (component_of_root[root] < 0) {
+      component_of_root[root] = static_cast<std::int64_t>(components.size());
+      components.emplace_back();
+    }
+    Component& part = components[static_cast<std::size_t>(component_of_root[root])];
+    local_node[v] = static_cast<std::uint32_t>(part.problem.node_count());
+    part.problem.is_virtual.push_back(problem.is_virtual[v]);
+    part.node_of.push_back(v);
+  }
+  std::vector<std::uint32_t> local_edge(problem.edges.size());
+  for (std::uint32_t e = 0; e < problem.edges.size(); ++e) {
+    const MatchingEdge& edge = problem.edges[e];
+    Component& c = components[static_cast<std::size_t>(component_of_root[sets.find(edge.u)])];
+    local_edge[e] = static_cast<std::uint32_t>(c.problem.edges.size());
+    c.problem.edges.push_back({local_node[edge.u], local_node[edge.v], edge.weight});
+    c.edge_of.push_back(e);
+  }
+  for (const ConflictPair& pair : problem.conflicts) {
+    const std::uint32_t root = sets.find(problem.edges[pair.first].u);
+    components[static_cast<std::size_t>(component_of_root[root])].problem.conflicts.push_back(
+        {local_edge[pair.first], local_edge[pair.second]});
+  }
+  return components;
+}
+
+}  // namespace tessera::matching

@@ -1,0 +1,60 @@
+// Feasible matchings for the exact solver's upper bound.
+//
+// Lagrangian repair: the conflict pairs are priced into the weights (w_e plus the multipliers of
+// the cliques that hold e, e.g. the clique rows' duals of the LP relaxation), and the cheapest
+// matching covering every port for those weights is computed by the blossom algorithm. While it
+// holds conflict pairs, the dearer edge of each pair is dropped and the uncovered ports are
+// covered again with edges compatible with the rest; when that fails, the edges in conflict are
+// priced up and the whole matching is recomputed.
+//
+// Local search: exchanges that keep the matching feasible and make it cheaper, to a local optimum:
+// two matched edges a-b, c-d replaced by a-c, b-d or a-d, b-c, and one matched edge replaced by
+// a cheaper parallel edge or, at a virtual port, by an edge to an unmatched virtual port.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "matching/adjacency.h"
+#include "matching/probing.h"
+#include "matching/problem.h"
+
+namespace tessera::matching {
+
+struct Incumbent {
+  bool found = false;
+  std::vector<std::uint32_t> edges;  // increasing
+  double objective = 0.0;
+};
+
+class IncumbentSearch {
+ public:
+  // The adjacency lists are those of `problem` (adjacency.h). Edges fixed to 0 are never used.
+  IncumbentSearch(const MatchingProblem& problem, const Adjacency& incident,
+                  const Adjacency& conflicts, const std::vector<Fixed>& fixed);
+
+  // `prices[e]` is added to w_e in the first round (the clique multipliers summed over e's
+  // cliques).
+  Incumbent lagrangian_repair(const std::vector<double>& prices, int rounds) const;
+
+  // Improves a feasible matching in place to a local optimum of the exchanges above.
+  void improve(Incumbent& incumbent) const;
+
+ private:
+  bool conflict_free_with(std::uint32_t e, const std::vector<std::uint8_t>& chosen) const;
+  std::vector<std::uint32_t> conflicting_members(const std::vector<std::uint32_t>& edges) const;
+  bool fill(std::vector<std::uint32_t>& kept, const std::vector<double>& weights) const;
+  bool try_swap(std::uint32_t e, std::uint32_t f, std::vector<std::uint8_t>& chosen,
+                std::vector<std::int64_t>& edge_at) const;
+  bool try_replace(std::uint32_t e, std::vector<std::uint8_t>& chosen,
+                   std::vector<std::int64_t>& edge_at) const;
+  std::int64_t cheapest_between(std::uint32_t a, std::uint32_t b,
+                                const std::vector<std::uint8_t>& chosen) const;
+
+  const MatchingProblem& problem_;
+  const Adjacency& incident_;
+  const Adjacency& conflicts_;
+  std::vector<std::uint8_t> allowed_;
+};
+
+}  // namespace tessera::matching

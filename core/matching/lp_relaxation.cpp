@@ -1,0 +1,169 @@
+#include "matching/lp_relaxation.h"
+
+#include <glpk.h>
+
+#include <algorithm>
+#include <string>
+
+#include "base/error.h"
+
+namespace tessera::matching {
+
+namespace {
+
+constexpr double kFractional = 1e-6;  // x in (eps, 1 - eps) is fractional
+
+void add_row(glp_prob* lp, const std::vector<int>& columns, int type, double bound) {
+  const int row = glp_add_rows(lp, 1);
+  glp_set_row_bnds(lp, row, type, bound, bound);
+  std::vector<int> index(columns.size() + 1);
+  std::vector<double> value(columns.size() + 1, 1.0);
+  std::copy(columns.begin(), columns.end(), index.begin() + 1);
+  glp_set_mat_row(lp, row, static_cast<int>(columns.size()), index.data(), value.data());
+}
+
+std::vector<int> columns_of(std::span<const std::uint32_t> edges) {
+  std::vector<int> columns(edges.size());
+  for (std::size_t k = 0; k < edges.size(); ++k) columns[k] = static_cast<int>(edges[k]) + 1;
+  return columns;
+}
+
+int simplex(glp_prob* lp, double cutoff, double seconds) {
+  glp_smcp parameters;
+  glp_init_smcp(&parameters);
+  parameters.msg_lev = GLP_MSG_OFF;
+  parameters.meth = GLP_DUALP;
+  parameters.obj_ul = cutoff;
+  parameters.tm_lim = static_cast<int>(std::min(std::max(seconds, 0.0) * 1000.0, 2.0e9)) + 1;
+  return glp_simplex(lp, &parameters);
+}
+
+}  // namespace
+
+void LpRelaxation::Deleter::operator()(glp_prob* p) const {
+  glp_delete_prob(p);
+}
+
+LpRelaxation::LpRelaxation(const MatchingProblem& problem, const Adjacency& incident,
+                           const std::vector<Clique>& cliques)
+    : problem_(problem), lp_(glp_create_prob()) {
+  glp_prob* lp = lp_.get();
+  glp_set_obj_dir(lp, GLP_MIN);
+  if (!problem.edges.empty()) glp_add_cols(lp, static_cast<int>(problem.edges.size()));
+  for (std::size_t e = 0; e < problem.edges.size(); ++e) {
+    glp_set_col_bnds(lp, static_cast<int>(e) + 1, GLP_DB, 0.0, 1.0);
+    glp_set_obj_coef(lp, static_cast<int>(e) + 1, problem.edges[e].weight);
+  }
+  for (std::uint32_t v = 0; v < problem.node_count(); ++v)  // (5.2)
+    add_row(lp, columns_of(incident.of(v)), problem.is_virtual[v] ? GLP_UP : GLP_FX, 1.0);
+  clique_rows_begin_ = glp_get_num_rows(lp) + 1;
+  for (const Clique& clique : cliques) add_row(lp, columns_of(clique), GLP_UP, 1.0);  // (5.3)
+  clique_rows_end_ = glp_get_num_rows(lp) + 1;
+  glp_std_basis(lp);
+}
+
+LpRelaxation::~LpRelaxation() = default;
+
+void LpRelaxation::set_bounds(std::uint32_t e, int lower, int upper) {
+  const int column = static_cast<int>(e) + 1;
+  if (lower == upper) {
+    glp_set_col_bnds(lp_.get(), column, GLP_FX, lower, upper);
+  } else {
+    glp_set_col_bnds(lp_.get(), column, GLP_DB, lower, upper);
+  }
+}
+
+LpStatus LpRelaxation::solve(double cutoff, double seconds) {
+  glp_prob* lp = lp_.get();
+  int code = simplex(lp, cutoff, seconds);
+  if (code == GLP_EFAIL || code == GLP_ESING || code == GLP_ECOND || code == GLP_EBADB) {
+    glp_std_basis(lp);  // a basis gone numerically bad: start afresh once
+    code = simplex(lp, cutoff, seconds);
+  }
+  if (code == GLP_EOBJUL) return LpStatus::cutoff;
+  if (code == GLP_ETMLIM) return LpStatus::time_limit;
+  if (code != 0)
+    throw Error("GLPK's simplex failed on the relaxation (code " + std::to_string(code) + ")");
+  const int status = glp_get_status(lp);
+  if (status == GLP_NOFEAS) return LpStatus::infeasible;
+  if (status != GLP_OPT)
+    throw Error("GLPK's simplex ended without an optimum (status " + std::to_string(status) + ")");
+  read_solution();
+  return objective_ > cutoff ? LpStatus::cutoff : LpStatus::optimal;
+}
+
+void LpRelaxation::read_solution() {
+  glp_prob* lp = lp_.get();
+  const std::size_t m = problem_.edges.size();
+  values_.resize(m);
+  reduced_.resize(m);
+  for (std::size_t e = 0; e < m; ++e) {
+    values_[e] = glp_get_col_prim(lp, static_cast<int>(e) + 1);
+    reduced_[e] = glp_get_col_dual(lp, static_cast<int>(e) + 1);
+  }
+  objective_ = glp_get_obj_val(lp);
+}
+
+std::vector<double> LpRelaxation::clique_prices() const {
+  std::vector<double> prices;
+  for (int row = clique_rows_begin_; row < clique_rows_end_; ++row)
+    prices.push_back(std::max(0.0, -glp_get_row_dual(lp_.get(), row)));
+  return prices;
+}
+
+std::size_t LpRelaxation::add_violated_odd_sets() {
+  // Components of the graph of fractional edges, by union-find over the nodes.
+  std::vector<std::uint32_t> parent(problem_.node_count());
+  for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
+  auto find = [&](std::uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (std::size_t e = 0; e < values_.size(); ++e)
+    if (values_[e] > kFractional && values_[e] < 1.0 - kFractional)
+      parent[find(problem_.edges[e].u)] = find(problem_.edges[e].v);
+  std::vector<std::uint32_t> size(parent.size(), 0);
+  std::vector<std::uint8_t> has_virtual(parent.size(), 0);
+  for (std::uint32_t v = 0; v < parent.size(); ++v) {
+    ++size[find(v)];
+    has_virtual[find(v)] |= problem_.is_virtual[v];
+  }
+  std::vector<std::vector<int>> rows(parent.size());
+  for (std::size_t e = 0; e < problem_.edges.size(); ++e) {
+    const std::uint32_t root = find(problem_.edges[e].u);
+    if (root == find(problem_.edges[e].v) && size[root] % 2 == 1 && size[root] > 1 &&
+        !has_virtual[root])
+      rows[root].push_back(static_cast<int>(e) + 1);
+  }
+  std::size_t added = 0;
+  for (std::uint32_t root = 0; root < rows.size(); ++root) {
+    if (rows[root].empty()) continue;
+    add_row(lp_.get(), rows[root], GLP_UP, (size[root] - 1) / 2.0);
+    ++added;
+  }
+  return added;
+}
+
+LpBasis LpRelaxation::basis() const {
+  glp_prob* lp = lp_.get();
+  LpBasis b;
+  b.rows.resize(static_cast<std::size_t>(glp_get_num_rows(lp)));
+  b.columns.resize(static_cast<std::size_t>(glp_get_num_cols(lp)));
+  for (std::size_t i = 0; i < b.rows.size(); ++i)
+    b.rows[i] = static_cast<std::int8_t>(glp_get_row_stat(lp, static_cast<int>(i) + 1));
+  for (std::size_t j = 0; j < b.columns.size(); ++j)
+    b.columns[j] = static_cast<std::int8_t>(glp_get_col_stat(lp, static_cast<int>(j) + 1));
+  return b;
+}
+
+void LpRelaxation::restore(const LpBasis& basis) {
+  glp_prob* lp = lp_.get();
+  const int rows = glp_get_num_rows(lp);
+  for (int i = 1; i <= rows; ++i)  // rows added after the basis was stored: slack basic
+    glp_set_row_stat(lp, i,
+                     static_cast<std::size_t>(i) <= basis.rows.size() ? basis.rows[i - 1] : GLP_BS);
+  for (std::size_t j = 0; j < basis.columns.size(); ++j)
+    glp_set_col_stat(lp, static_cast<int>(j) + 1, basis.columns[j]);
+}
+
+}  // namespace tessera::matching

@@ -1,0 +1,66 @@
+// The linear relaxation of P1 that bounds the exact solver's search, solved by GLPK's simplex
+// method: the degree rows (5.2), the conflict pairs (5.3) as clique rows (cliques.h), odd-set rows
+// x(E(S)) <= (|S| - 1) / 2 of the perfect matching polytope added when violated, 0 <= x <= 1.
+// The branch-and-bound fixes columns and re-solves with the dual simplex method from the last
+// basis, or from a stored one.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "matching/adjacency.h"
+#include "matching/cliques.h"
+#include "matching/problem.h"
+
+struct glp_prob;
+
+namespace tessera::matching {
+
+enum class LpStatus { optimal, infeasible, cutoff, time_limit };
+
+// A simplex basis (GLPK's row and column statuses).
+struct LpBasis {
+  std::vector<std::int8_t> rows, columns;
+};
+
+class LpRelaxation {
+ public:
+  LpRelaxation(const MatchingProblem& problem, const Adjacency& incident,
+               const std::vector<Clique>& cliques);
+  ~LpRelaxation();
+  LpRelaxation(const LpRelaxation&) = delete;
+  LpRelaxation& operator=(const LpRelaxation&) = delete;
+
+  // Column e in [lower, upper] (each 0 or 1).
+  void set_bounds(std::uint32_t e, int lower, int upper);
+
+  // Solves; stops early with `cutoff` once the bound provably exceeds `cutoff`.
+  LpStatus solve(double cutoff, double seconds);
+  double objective() const { return objective_; }
+  const std::vector<double>& values() const { return values_; }          // x per edge
+  const std::vector<double>& reduced_costs() const { return reduced_; }  // per edge
+  // -dual of each clique row (>= 0): the Lagrangian multipliers of the cliques at this optimum.
+  std::vector<double> clique_prices() const;
+
+  // Odd sets S of ports (no virtual port) spanned by a component of the fractional edges whose
+  // row x(E(S)) <= (|S| - 1) / 2 the current solution violates; adds their rows. Returns how many.
+  std::size_t add_violated_odd_sets();
+
+  LpBasis basis() const;
+  void restore(const LpBasis& basis);
+
+ private:
+  void read_solution();
+
+  struct Deleter {
+    void operator()(glp_prob* p) const;
+  };
+  const MatchingProblem& problem_;
+  std::unique_ptr<glp_prob, Deleter> lp_;
+  int clique_rows_begin_ = 0, clique_rows_end_ = 0;  // 1-based row range of the cliques
+  double objective_ = 0.0;
+  std::vector<double> values_, reduced_;
+};
+
+}  // namespace tessera::matching

@@ -1,0 +1,87 @@
+#include "matching/solver.h"
+
+#include <chrono>
+
+#include "base/error.h"
+#include "matching/adjacency.h"
+#include "matching/check.h"
+#include "matching/exact_solver.h"
+#include "matching/glpk_solver.h"
+#include "matching/incumbent.h"
+
+namespace tessera::matching {
+
+namespace {
+
+constexpr int kRepairRounds = 6;
+
+// The tuned GLPK configuration: clique rows, cuts, and the Lagrangian repair's matching (priced by
+// the plain weights) as the first incumbent.
+MatchingResult solve_glpk_tuned(const MatchingProblem& problem, double time_limit,
+                                const Progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  GlpkConfig config;
+  config.clique_rows = true;
+  config.cuts = true;
+  const Adjacency incident = incident_edges(problem);
+  const Adjacency conflicts = conflicting_edges(problem);
+  const std::vector<Fixed> none(problem.edges.size(), Fixed::free);
+  const IncumbentSearch heuristics(problem, incident, conflicts, none);
+  const Incumbent incumbent =
+      heuristics.lagrangian_repair(std::vector<double>(problem.edges.size(), 0.0), kRepairRounds);
+  if (incumbent.found) config.incumbent = incumbent.edges;
+  const double spent =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  MatchingResult result = solve_with_glpk(problem, config, time_limit - spent, progress);
+  result.seconds += spent;
+  return result;
+}
+
+void verify(const MatchingProblem& problem, const MatchingResult& result, SolverKind kind) {
+  if (!result.has_solution()) return;
+  const SolutionCheck check = check_solution(problem, result.edges);
+  if (!check.feasible)
+    throw Error(std::string("the ") + to_string(kind) +
+                " solver returned an infeasible matching: " + check.violations.front());
+}
+
+}  // namespace
+
+SolverKind solver_kind_from_name(const std::string& name) {
+  if (name == "exact") return SolverKind::exact;
+  if (name == "glpk") return SolverKind::glpk;
+  if (name == "glpk-tuned") return SolverKind::glpk_tuned;
+  throw InputError("unknown solver '" + name + "'; choose exact, glpk or glpk-tuned");
+}
+
+const char* to_string(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::exact:
+      return "exact";
+    case SolverKind::glpk:
+      return "glpk";
+    case SolverKind::glpk_tuned:
+      return "glpk-tuned";
+  }
+  return "unknown";
+}
+
+MatchingResult solve_matching(const MatchingProblem& problem, SolverKind kind, double time_limit,
+                              const Progress& progress) {
+  MatchingResult result;
+  switch (kind) {
+    case SolverKind::exact:
+      result = solve_exact(problem, time_limit, progress);
+      break;
+    case SolverKind::glpk:
+      result = solve_with_glpk(problem, GlpkConfig{}, time_limit, progress);
+      break;
+    case SolverKind::glpk_tuned:
+      result = solve_glpk_tuned(problem, time_limit, progress);
+      break;
+  }
+  verify(problem, result, kind);
+  return result;
+}
+
+}  // namespace tessera::matching

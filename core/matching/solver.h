@@ -1,0 +1,27 @@
+// One entry point for every P1 solver (thesis Ch. 5, Appendix B), with a time limit and an
+// independent check of what the solver returns.
+//   exact       the exact solver (exact_solver.h), the default
+//   glpk        GLPK's branch-and-bound on the plain model (5.1)-(5.4), the reference
+//   glpk-tuned  GLPK on clique rows with cuts, started from the Lagrangian repair's matching
+#pragma once
+
+#include <string>
+
+#include "base/progress.h"
+#include "matching/problem.h"
+#include "matching/result.h"
+
+namespace tessera::matching {
+
+enum class SolverKind { exact, glpk, glpk_tuned };
+
+// "exact", "glpk", "glpk-tuned"; throws InputError naming the choices otherwise.
+SolverKind solver_kind_from_name(const std::string& name);
+const char* to_string(SolverKind kind);
+
+// Solves within time_limit seconds. The returned matching is verified by check_solution(); a
+// solver that returns an infeasible one is a bug and throws Error.
+MatchingResult solve_matching(const MatchingProblem& problem, SolverKind kind, double time_limit,
+                              const Progress& progress = Progress());
+
+}  // namespace tessera::matching

@@ -1,0 +1,239 @@
+// The exact solver against brute force on tiny instances and against GLPK's plain model on
+// generated ones (planted matchings, random conflicts, infeasible ones): the same status, the same
+// optimum, and every matching passes the independent checker.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "matching/blossom.h"
+#include "matching/check.h"
+#include "matching/components.h"
+#include "matching/generate.h"
+#include "matching/random.h"
+#include "matching/solver.h"
+
+namespace tessera::matching {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The optimum by enumerating every subset of edges (m <= 20).
+double brute_force_optimum(const MatchingProblem& p) {
+  double best = kInfinity;
+  const std::uint32_t m = static_cast<std::uint32_t>(p.edges.size());
+  for (std::uint32_t subset = 0; subset < (1u << m); ++subset) {
+    std::vector<std::uint32_t> edges;
+    for (std::uint32_t e = 0; e < m; ++e)
+      if (subset & (1u << e)) edges.push_back(e);
+    const SolutionCheck check = check_solution(p, edges);
+    if (check.feasible) best = std::min(best, check.objective);
+  }
+  return best;
+}
+
+MatchingProblem tiny_instance(std::uint64_t seed) {
+  Random random(seed);
+  MatchingProblem p;
+  const std::uint32_t n = 4 + random.below(5);
+  for (std::uint32_t v = 0; v < n; ++v) p.is_virtual.push_back(random.below(4) == 0);
+  const std::uint32_t m = 6 + random.below(10);
+  for (std::uint32_t e = 0; e < m; ++e) {
+    const std::uint32_t u = random.below(n);
+    const std::uint32_t v = (u + 1 + random.below(n - 1)) % n;
+    p.edges.push_back({u, v, std::round(random.unit() * 20.0 - 4.0)});  // ties and negatives
+  }
+  const std::uint32_t k = random.below(2 * m);
+  for (std::uint32_t c = 0; c < k; ++c) {
+    const std::uint32_t e = random.below(m);
+    p.conflicts.push_back({e, (e + 1 + random.below(m - 1)) % m});
+  }
+  return p;
+}
+
+void expect_agree(const MatchingProblem& p, const MatchingResult& exact, double optimum,
+                  const std::string& what) {
+  if (std::isinf(optimum)) {
+    EXPECT_EQ(exact.status, SolveStatus::infeasible) << what;
+    EXPECT_TRUE(exact.edges.empty()) << what;
+    return;
+  }
+  ASSERT_EQ(exact.status, SolveStatus::optimal) << what;
+  EXPECT_NEAR(exact.objective, optimum, 1e-9 * std::max(1.0, std::abs(optimum))) << what;
+  EXPECT_EQ(exact.lower_bound, exact.objective) << what;
+  EXPECT_EQ(exact.gap(), 0.0) << what;
+  const SolutionCheck check = check_solution(p, exact.edges);
+  EXPECT_TRUE(check.feasible) << what;
+  EXPECT_EQ(check.objective, exact.objective) << what;
+}
+
+TEST(MatchingExact, MatchesBruteForceOnTinyInstances) {
+  int feasible = 0;
+  for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+    const MatchingProblem p = tiny_instance(seed);
+    const double optimum = brute_force_optimum(p);
+    feasible += std::isfinite(optimum);
+    expect_agree(p, solve_matching(p, SolverKind::exact, 10.0), optimum,
+                 "seed " + std::to_string(seed));
+  }
+  EXPECT_GT(feasible, 50);  // both kinds are well represented
+  EXPECT_LT(feasible, 250);
+}
+
+TEST(MatchingExact, AgreesWithGlpkOnPlantedAndRandomInstances) {
+  int infeasible = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    PlantedSpec spec;
+    spec.ports = 20 + 2 * static_cast<std::uint32_t>(seed % 11);
+    spec.virtual_ports = static_cast<std::uint32_t>(seed % 4);
+    spec.keep_planted_feasible = seed % 4 != 0;  // some may lose every feasible matching
+    spec.extra_edges = (spec.keep_planted_feasible ? 3 : 1) * spec.ports;
+    spec.conflicts = (spec.keep_planted_feasible ? (seed % 2 ? 3 : 8) : 2) * spec.ports;
+    spec.seed = seed;
+    const MatchingProblem p = planted_instance(spec);
+    const MatchingResult glpk = solve_matching(p, SolverKind::glpk, 60.0);
+    ASSERT_TRUE(glpk.status == SolveStatus::optimal || glpk.status == SolveStatus::infeasible);
+    if (spec.keep_planted_feasible) EXPECT_EQ(glpk.status, SolveStatus::optimal);
+    infeasible += glpk.status == SolveStatus::infeasible;
+    const double optimum = glpk.status == SolveStatus::optimal ? glpk.objective : kInfinity;
+    expect_agree(p, solve_matching(p, SolverKind::exact, 60.0), optimum,
+                 "seed " + std::to_string(seed));
+  }
+  EXPECT_GT(infeasible, 0);
+}
+
+SyntheticLayoutSpec layout_spec(std::uint32_t pairs, double max_length, double alpha) {
+  SyntheticLayoutSpec spec;
+  spec.singularity_pairs = pairs;
+  spec.max_length = max_length;
+  spec.alpha = alpha;
+  spec.seed = 3;
+  return spec;
+}
+
+TEST(MatchingExact, AgreesWithGlpkOnSyntheticLayoutInstances) {
+  for (double alpha : {0.0, 1.0, 5.0}) {
+    const MatchingProblem p = synthetic_layout_instance(layout_spec(7, 6.0, alpha));
+    const MatchingResult glpk = solve_matching(p, SolverKind::glpk, 60.0);
+    ASSERT_EQ(glpk.status, SolveStatus::optimal);
+    expect_agree(p, solve_matching(p, SolverKind::exact, 60.0), glpk.objective,
+                 "alpha " + std::to_string(alpha));
+  }
+}
+
+// Larger instances, where GLPK's plain model takes minutes: the tuned model is the reference.
+TEST(MatchingExact, AgreesWithTunedGlpkOnLargerSyntheticInstances) {
+  for (double alpha : {0.0, 1.0, 5.0, 20.0}) {
+    const MatchingProblem p = synthetic_layout_instance(layout_spec(11, 8.0, alpha));
+    const MatchingResult tuned = solve_matching(p, SolverKind::glpk_tuned, 120.0);
+    ASSERT_EQ(tuned.status, SolveStatus::optimal);
+    expect_agree(p, solve_matching(p, SolverKind::exact, 60.0), tuned.objective,
+                 "alpha " + std::to_string(alpha));
+  }
+}
+
+TEST(MatchingExact, ConflictsThatBlockEveryMatchingMeanInfeasible) {
+  PlantedSpec spec;
+  spec.blocked_squares = 2;  // G has a perfect matching, P1 none
+  const MatchingProblem p = planted_instance(spec);
+  std::vector<std::uint8_t> all(p.edges.size(), 1);
+  EXPECT_TRUE(deficient_ports(p, all).empty());
+  const MatchingResult r = solve_matching(p, SolverKind::exact, 10.0);
+  EXPECT_EQ(r.status, SolveStatus::infeasible);
+  EXPECT_TRUE(r.unmatchable_ports.empty());
+  EXPECT_TRUE(std::isinf(r.lower_bound));
+}
+
+TEST(MatchingExact, NamesThePortsNoMatchingCovers) {
+  // Ports 0-1-2 in a path and 3-4: the star at 1 leaves 0 or 2 uncovered.
+  MatchingProblem p;
+  p.is_virtual = {0, 0, 0, 0, 0};
+  p.edges = {{0, 1, 1.0}, {1, 2, 1.0}, {3, 4, 1.0}};
+  const MatchingResult r = solve_matching(p, SolverKind::exact, 10.0);
+  EXPECT_EQ(r.status, SolveStatus::infeasible);
+  EXPECT_EQ(r.unmatchable_ports, (std::vector<std::uint32_t>{0, 2}));
+  p.is_virtual[2] = 1;  // now 2 may stay unmatched
+  EXPECT_EQ(solve_matching(p, SolverKind::exact, 10.0).status, SolveStatus::optimal);
+}
+
+TEST(MatchingExact, ComponentsAddUp) {
+  PlantedSpec a;
+  a.ports = 16;
+  a.conflicts = 100;
+  a.seed = 11;
+  PlantedSpec b = a;
+  b.virtual_ports = 3;
+  b.seed = 12;
+  const MatchingProblem pa = planted_instance(a), pb = planted_instance(b);
+  MatchingProblem both = pa;
+  const auto shift_nodes = static_cast<std::uint32_t>(pa.node_count());
+  const auto shift_edges = static_cast<std::uint32_t>(pa.edges.size());
+  both.is_virtual.insert(both.is_virtual.end(), pb.is_virtual.begin(), pb.is_virtual.end());
+  for (const MatchingEdge& e : pb.edges)
+    both.edges.push_back({e.u + shift_nodes, e.v + shift_nodes, e.weight});
+  for (const ConflictPair& c : pb.conflicts)
+    both.conflicts.push_back({c.first + shift_edges, c.second + shift_edges});
+  EXPECT_EQ(split_components(both).size(), 2u);
+  const MatchingResult ra = solve_matching(pa, SolverKind::exact, 10.0);
+  const MatchingResult rb = solve_matching(pb, SolverKind::exact, 10.0);
+  const MatchingResult r = solve_matching(both, SolverKind::exact, 10.0);
+  ASSERT_EQ(r.status, SolveStatus::optimal);
+  EXPECT_NEAR(r.objective, ra.objective + rb.objective, 1e-9 * r.objective);
+}
+
+TEST(MatchingExact, IsDeterministic) {
+  SyntheticLayoutSpec spec;
+  spec.singularity_pairs = 14;
+  spec.max_length = 8.0;
+  spec.alpha = 0.0;
+  const MatchingProblem p = synthetic_layout_instance(spec);
+  const MatchingResult first = solve_matching(p, SolverKind::exact, 60.0);
+  const MatchingResult second = solve_matching(p, SolverKind::exact, 60.0);
+  EXPECT_EQ(first.edges, second.edges);
+  EXPECT_EQ(first.nodes, second.nodes);
+  EXPECT_EQ(first.objective, second.objective);
+}
+
+TEST(MatchingExact, ATimeLimitReturnsTheBestWithAProvenBound) {
+  SyntheticLayoutSpec spec;
+  spec.singularity_pairs = 40;
+  spec.max_length = 10.0;
+  spec.alpha = 0.0;
+  const MatchingProblem p = synthetic_layout_instance(spec);
+  const MatchingResult r = solve_matching(p, SolverKind::exact, 0.05);
+  EXPECT_LT(r.seconds, 2.0);
+  if (r.status == SolveStatus::optimal) GTEST_SKIP() << "solved within 0.05 s";
+  ASSERT_TRUE(r.status == SolveStatus::feasible || r.status == SolveStatus::time_limit);
+  EXPECT_TRUE(std::isfinite(r.lower_bound));
+  if (r.has_solution()) {
+    EXPECT_TRUE(check_solution(p, r.edges).feasible);
+    EXPECT_LE(r.lower_bound, r.objective);
+    EXPECT_GT(r.gap(), 0.0);
+  }
+}
+
+TEST(MatchingBlossom, CoversPortsAtLeastWeightWithVirtualPorts) {
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    MatchingProblem p = tiny_instance(seed);
+    p.conflicts.clear();
+    const double optimum = brute_force_optimum(p);
+    std::vector<double> weights;
+    for (const MatchingEdge& e : p.edges) weights.push_back(e.weight);
+    const PortCover cover =
+        min_weight_port_cover(p, weights, std::vector<std::uint8_t>(p.edges.size(), 1));
+    ASSERT_EQ(cover.exists, std::isfinite(optimum)) << "seed " << seed;
+    if (!cover.exists) continue;
+    const SolutionCheck check = check_solution(p, cover.edges);
+    EXPECT_TRUE(check.feasible) << "seed " << seed;
+    EXPECT_EQ(check.objective, optimum) << "seed " << seed;
+  }
+}
+
+TEST(MatchingSolver, NamesItsSolvers) {
+  EXPECT_EQ(solver_kind_from_name("glpk-tuned"), SolverKind::glpk_tuned);
+  EXPECT_STREQ(to_string(SolverKind::exact), "exact");
+  EXPECT_THROW(solver_kind_from_name("cplex"), InputError);
+}
+
+}  // namespace
+}  // namespace tessera::matching
