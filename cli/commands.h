@@ -15,5 +15,6 @@ int convert_command(const Args& args);
 int regmap_command(const Args& args);
 int field_command(const Args& args);
 int param_command(const Args& args);
+int solve_command(const Args& args);
 
 }  // namespace tessera::cli

@@ -23,6 +23,7 @@ constexpr Command kCommands[] = {
     {"regmap", tessera::cli::regmap_command, "regular maps: catalog, info, tiling, surface"},
     {"field", tessera::cli::field_command, "a cross field: singularities, Poincare-Hopf check"},
     {"param", tessera::cli::param_command, "seamless Poisson parameterization (uv per corner)"},
+    {"solve", tessera::cli::solve_command, "program P1: the conflict-free min-weight matching"},
 };
 
 void print_help() {

@@ -1,0 +1,85 @@
+// `tessera solve`: the JSON keys, every solver on both file forms, infeasible instances as answers,
+// bad input and usage as exit code 2.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_run.h"
+#include "matching/generate.h"
+#include "matching/instance_json.h"
+#include "matching/instance_lp.h"
+#include "mesh_test_util.h"
+
+namespace tessera::matching {
+namespace {
+
+using test::run_cli;
+using test::write_temp_file;
+
+MatchingProblem instance() {
+  PlantedSpec spec;
+  spec.ports = 30;
+  spec.virtual_ports = 2;
+  spec.conflicts = 120;
+  spec.seed = 5;
+  return planted_instance(spec);
+}
+
+nlohmann::json solve_json(const std::string& arguments) {
+  const auto result = run_cli("solve --json " + arguments);
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  return nlohmann::json::parse(result.out);
+}
+
+TEST(CliSolve, EverySolverOnBothFormsGivesTheSameOptimum) {
+  const std::string json = write_temp_file("p1.json", write_instance_json(instance()));
+  const std::string lp = write_temp_file("p1.lp", write_instance_lp(instance()));
+  const nlohmann::json reference = solve_json("'" + json + "'");
+  for (const char* key : {"solver", "status", "objective", "lower_bound", "gap", "seconds", "nodes",
+                          "edges", "unmatchable_ports", "instance"})
+    EXPECT_TRUE(reference.contains(key)) << key;
+  EXPECT_EQ(reference["solver"], "exact");
+  EXPECT_EQ(reference["status"], "optimal");
+  EXPECT_EQ(reference["gap"], 0.0);
+  EXPECT_EQ(reference["instance"]["ports"], 30);
+  EXPECT_EQ(reference["instance"]["virtual_ports"], 2);
+  for (const std::string solver : {"exact", "glpk", "glpk-tuned"}) {
+    for (const std::string& file : {json, lp}) {
+      const nlohmann::json r = solve_json("--solver " + solver + " '" + file + "'");
+      EXPECT_EQ(r["status"], "optimal") << solver << " " << file;
+      EXPECT_NEAR(r["objective"].get<double>(), reference["objective"].get<double>(), 1e-9)
+          << solver << " " << file;
+    }
+  }
+}
+
+TEST(CliSolve, InfeasibleIsAnAnswer) {
+  PlantedSpec spec;
+  spec.ports = 7;  // odd, no virtual port
+  const std::string path = write_temp_file("odd.json", write_instance_json(planted_instance(spec)));
+  const nlohmann::json r = solve_json("'" + path + "'");
+  EXPECT_EQ(r["status"], "infeasible");
+  EXPECT_TRUE(r["objective"].is_null());
+  EXPECT_TRUE(r["gap"].is_null());
+  EXPECT_FALSE(r["unmatchable_ports"].empty());
+  const auto text = run_cli("solve '" + path + "'");
+  EXPECT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.out.find("exact: infeasible"), std::string::npos) << text.out;
+}
+
+TEST(CliSolve, BadInputAndUsageExitWithTwo) {
+  const std::string broken = write_temp_file("broken.lp", {'M', 'i', 'n', '\n', 'x'});
+  const auto parse = run_cli("solve '" + broken + "'", true);
+  EXPECT_EQ(parse.exit_code, 2);
+  EXPECT_NE(parse.out.find("broken.lp:2:"), std::string::npos) << parse.out;
+  const std::string ok = write_temp_file("ok.json", write_instance_json(instance()));
+  EXPECT_EQ(run_cli("solve '" + ok + "' --solver cplex").exit_code, 2);
+  EXPECT_EQ(run_cli("solve '" + ok + "' --time-limit -1").exit_code, 2);
+  EXPECT_EQ(run_cli("solve '" + ok + "' --max-edges 3").exit_code, 2);
+  EXPECT_EQ(run_cli("solve").exit_code, 2);
+  EXPECT_EQ(run_cli("solve /no/such/file.json").exit_code, 2);
+  EXPECT_EQ(run_cli("solve --help").exit_code, 0);
+}
+
+}  // namespace
+}  // namespace tessera::matching
