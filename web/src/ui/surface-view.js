@@ -8,7 +8,8 @@ import { SURFACE_DEFAULTS, SURFACE_PARSERS, coreOptions, readSurfaceOptions } fr
  * The 3D view of the Regular maps mode: the regular surface of the map on screen (its edges as
  * tubes, coloured by quarter tube) in the viewer's 'surface' scene, its options, figures and GLB.
  * While the view is open it shows the surface of the map on screen with the options chosen,
- * building it when there is none.
+ * building it when there is none, unless that build failed or was cancelled: then only the
+ * Build button or another map starts it again.
  * root: the view's section of the panel; note: the element over the viewport shown while there is
  * no surface; viewer; status (Status); request(label, command, payload) runs a worker job
  * (resolves undefined when it failed or was cancelled); onStateChange(partial state).
@@ -23,6 +24,7 @@ export class SurfaceView {
     this.active = false;
     this.shown = null; // { key, payload, name } of the surface on screen
     this.building = null; // the key of the surface being built
+    this.stopped = null; // the key of the last build that failed or was cancelled
     this.setOptions(SURFACE_DEFAULTS);
 
     this.part('surface-form').addEventListener('submit', (event) => {
@@ -36,6 +38,7 @@ export class SurfaceView {
   /** A new map on screen ({ spec, name }): the surface of the previous one goes. */
   setMap(map) {
     this.map = map;
+    this.stopped = null;
     this.clear();
     return this.update();
   }
@@ -57,11 +60,14 @@ export class SurfaceView {
     this.showSmoothness();
   }
 
-  /** While the view is open: builds the surface of the map and options unless it shows or is under way. */
+  /**
+   * While the view is open: builds the surface of the map and options unless it shows, is under
+   * way or was stopped.
+   */
   async update() {
     if (!this.active || !this.map) return;
     const key = surfaceKey(this.map, this.options);
-    if (key !== this.shown?.key && key !== this.building) await this.build();
+    if (![this.shown?.key, this.building, this.stopped].includes(key)) await this.build();
   }
 
   async buildFromForm() {
@@ -85,7 +91,11 @@ export class SurfaceView {
     this.building = key;
     const result = await this.request(`Building the regular surface of ${map.name}`, COMMANDS.regmapSurface, payload);
     if (this.building === key) this.building = null;
-    if (!result || this.map !== map) return;
+    if (this.map !== map) return;
+    if (!result) {
+      this.stopped = key;
+      return this.showNote();
+    }
     this.shown = { key, payload, name: map.name };
     this.viewer.showColoredSurface(result.surface);
     fillFigures(this.part('surface-figures'), SURFACE_FIGURES, surfaceFigureValues(result.stats));
@@ -111,8 +121,12 @@ export class SurfaceView {
   }
 
   showNote() {
-    this.note.hidden = !this.active || this.shown !== null;
-    if (this.map) this.note.textContent = `The regular surface of ${this.map.name} shows here once it is built.`;
+    this.note.hidden = !this.active || this.shown !== null || !this.map;
+    if (!this.map) return;
+    const stopped = this.stopped === surfaceKey(this.map, this.options);
+    this.note.textContent = stopped
+      ? `The regular surface of ${this.map.name} was not built. "Build the surface" tries again.`
+      : `The regular surface of ${this.map.name} shows here once it is built.`;
   }
 
   showSmoothness() {
