@@ -5,6 +5,7 @@
 #include <emscripten/val.h>
 
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -125,9 +126,10 @@ regmap::SurfaceOptions surface_options(const val& options) {
     }
   }
   surface.tube.radius = number_option(options, "tubeRadius", surface.tube.radius);
+  // The core checks the range; here only that it is a whole number.
   const double smoothness = number_option(options, "smoothness", surface.tube.smoothness);
-  if (!(smoothness >= 1 && smoothness <= 16))
-    throw InputError("option 'smoothness' must be between 1 and 16");
+  if (!(std::abs(smoothness) < 1e6) || smoothness != std::floor(smoothness))
+    throw InputError("option 'smoothness' must be a whole number of quads");
   surface.tube.smoothness = static_cast<int>(smoothness);
   return surface;
 }
