@@ -20,10 +20,9 @@
 // descent with a step that decays linearly over a fixed number of iterations: deterministic, and
 // the same on every platform up to floating point.
 //
-// In:  an edge graph, its junction order, an embedding (e.g. the Jemisphere one) whose edge paths
-//      are single midpoints.
+// In:  an edge graph, its junction order, an embedding (e.g. the Jemisphere one).
 // Out: the embedding moved in place; a report with the convergence measures.
-// Throws CancelledError through `progress`; Error for a path of more than one point.
+// Throws CancelledError through `progress`.
 #pragma once
 
 #include "base/progress.h"
