@@ -6,9 +6,17 @@
 namespace tessera::layout {
 namespace {
 
-// Lengths this close count as equal (case 3 of C1); parametric units, one is about a triangle.
+// Lengths this close count as equal (case 3 of C1). The tolerance is the parameterization's
+// accuracy, not the arithmetic's: on a symmetric mesh the lengths that should be equal differ by
+// the solver's noise, and a singularity sitting on a 45-degree line must not slip through as case 1
+// or 2 of its neighbour.
+constexpr double kEqualLengths = 1e-6;
+// Hypotenuse angles (radians) this close count as equal in the window reduction: a singularity on
+// the hypotenuse of a later candidate closes the window to it.
+constexpr double kEqualAngles = 1e-6;
+
 bool nearly_equal(double a, double b) {
-  return std::abs(a - b) <= 1e-9 * std::max({1.0, a, b});
+  return std::abs(a - b) <= kEqualLengths * std::max({1.0, a, b});
 }
 
 bool adjacent_ports(const PortGraph& graph, Index a, Index b) {
@@ -20,7 +28,8 @@ bool adjacent_ports(const PortGraph& graph, Index a, Index b) {
 EdgeCollector::EdgeCollector(std::size_t line_count, double rho)
     : rho_(rho),
       // The first candidate on a side may have the full 45 degrees (Prop. 4.1).
-      window_(line_count, {std::numbers::pi / 4 + 1e-12, std::numbers::pi / 4 + 1e-12}) {}
+      window_(line_count,
+              {std::numbers::pi / 4 + 2 * kEqualAngles, std::numbers::pi / 4 + 2 * kEqualAngles}) {}
 
 Index EdgeCollector::try_edge(PortGraph& graph, Index base, double base_length,
                               const Eigen::Vector2d& d_base, Index height, double height_length,
@@ -30,7 +39,7 @@ Index EdgeCollector::try_edge(PortGraph& graph, Index base, double base_length,
   const int side = cross(d_base, d_height) > 0 ? 1 : -1;
   double& window = window_[base][side > 0 ? 0 : 1];
   const double angle = std::atan2(height_length, base_length);
-  if (angle >= window) return kNoIndex;
+  if (angle >= window - kEqualAngles) return kNoIndex;
   window = angle;
   const Index other = graph.ports.neighbour(height, side);
   if (other == kNoIndex || other == base) return kNoIndex;
@@ -48,7 +57,7 @@ Index EdgeCollector::try_edge(PortGraph& graph, Index base, double base_length,
   return static_cast<Index>(graph.edges.size() - 1);
 }
 
-bool EdgeCollector::add_c1_edges(PortGraph& graph, const Crossing& m, Index crossing) {
+void EdgeCollector::add_c1_edges(PortGraph& graph, const Crossing& m, Index crossing) {
   const bool diagonal = nearly_equal(m.length_a, m.length_b);
   Index from_a = kNoIndex, from_b = kNoIndex;
   if (diagonal || m.length_a > m.length_b)
@@ -61,7 +70,6 @@ bool EdgeCollector::add_c1_edges(PortGraph& graph, const Crossing& m, Index cros
     graph.edges[from_a].diagonal = graph.edges[from_b].diagonal = true;
     graph.zero_area.push_back({std::min(from_a, from_b), std::max(from_a, from_b)});
   }
-  return from_a != kNoIndex || from_b != kNoIndex;
 }
 
 std::vector<Index> EdgeCollector::spiral_test(const PortGraph& graph, const Crossing& m) {
@@ -89,15 +97,15 @@ std::vector<Index> EdgeCollector::spiral_test(const PortGraph& graph, const Cros
 }
 
 std::vector<Index> EdgeCollector::on_crossing(PortGraph& graph, const Crossing& m) {
-  ++graph.crossings_found;
   const Index index = static_cast<Index>(graph.crossings.size());
   graph.crossings.push_back(m);
-  if (!add_c1_edges(graph, m, index) && m.line_a != m.line_b) graph.crossings.pop_back();
+  add_c1_edges(graph, m, index);
   if (m.line_a == m.line_b) return {};
   return spiral_test(graph, m);
 }
 
-void EdgeCollector::on_singularity(PortGraph& graph, Index line, Index port_hit, double length) {
+void EdgeCollector::on_singularity(PortGraph& graph, Index line, Index port_hit, double length,
+                                   double offset) {
   if (port_hit == kNoIndex || port_hit == line) return;
   // Both ends of a closed separatrix may be traced; it is one edge.
   if (!closed_pairs_.insert({std::min(line, port_hit), std::max(line, port_hit)}).second) return;
@@ -107,6 +115,8 @@ void EdgeCollector::on_singularity(PortGraph& graph, Index line, Index port_hit,
   edge.v = port_hit;
   edge.base_line = line;
   edge.base = length;
+  edge.height = std::abs(offset);
+  edge.side = offset < 0 ? 1 : -1;
   graph.edges.push_back(edge);
 }
 

@@ -24,11 +24,12 @@ class EdgeCollector {
  public:
   EdgeCollector(std::size_t line_count, double rho);
 
-  // Adds the C1 edges of crossing m (and m to graph.crossings when it gave edges or is a
-  // self-crossing). Returns the lines the spiral test stops at m.
+  // Adds m to graph.crossings and its C1 edges to graph.edges. Returns the lines the spiral test
+  // stops at m.
   std::vector<Index> on_crossing(PortGraph& graph, const Crossing& m);
-  // Separatrix `line` reached singular point port `port_hit` after `length`.
-  void on_singularity(PortGraph& graph, Index line, Index port_hit, double length);
+  // Separatrix `line` reached the singularity of port `port_hit` after `length`, passing it at the
+  // signed distance `offset` (left > 0): the edge's base and height.
+  void on_singularity(PortGraph& graph, Index line, Index port_hit, double length, double offset);
   // Separatrix `line` left the surface after `length` at `point` of `face`.
   void on_boundary(PortGraph& graph, Index line, double length, Index face,
                    const Eigen::Vector2d& point);
@@ -37,7 +38,7 @@ class EdgeCollector {
   Index try_edge(PortGraph& graph, Index base, double base_length, const Eigen::Vector2d& d_base,
                  Index height, double height_length, const Eigen::Vector2d& d_height,
                  Index crossing);
-  bool add_c1_edges(PortGraph& graph, const Crossing& m, Index crossing);
+  void add_c1_edges(PortGraph& graph, const Crossing& m, Index crossing);
   std::vector<Index> spiral_test(const PortGraph& graph, const Crossing& m);
 
   double rho_;

@@ -1,10 +1,12 @@
-// The illegal crossings I (thesis Sec. 4.6, Algorithm 1, Remarks 4.1 and 4.2). At every point m of
-// K, the intersection of gamma_a and gamma_b (possibly one self-crossing separatrix, Remark 4.1),
-// the parameter chart around m is a common local frame: every edge whose triangle has a side on a
-// (on b) is laid out in it by walking along a (along b) from m, its hypotenuse a segment there. Two
+// The illegal crossings I (thesis Sec. 4.6, Algorithm 1, Remarks 4.1 and 4.2). At every
+// intersection m of gamma_a and gamma_b (possibly one self-crossing separatrix, Remark 4.1), the
+// parameter chart around m is a common local frame: every edge whose triangle has a side on a (on
+// b) is laid out in it by walking along a (along b) from m, its hypotenuse a segment there. Two
 // edges with the same alignment (bases parallel) whose hypotenuses cross are an illegal pair;
 // differently aligned crossings are legal. Illegality in one frame suffices. The zero-area pairs Z
-// of case 3 are added.
+// of case 3 are added. Algorithm 1 names the set K of intersections that satisfy C1; every
+// intersection is used here, because two edges can cross where neither of the lines through the
+// crossing point gave an edge there (the frame still holds both triangles).
 //
 // Only pairs with one edge on a and the other on b are tested: two edges on the same line either
 // share a port (never matched together), are differently aligned, or lie on opposite sides of it.

@@ -89,14 +89,33 @@ void SeparatrixGrowth::grow(double length_limit, const Progress& progress) {
   }
 }
 
-Index SeparatrixGrowth::port_arriving(const LineCursor& cursor, Index vertex) const {
+Index SeparatrixGrowth::port_arriving(Index face, Index vertex,
+                                      const Eigen::Vector2d& direction) const {
   const Index point = graph_.ports.point_of_vertex[vertex];
   const VertexRing& ring = graph_.ports.points[point].ring;
   for (std::size_t k = 0; k < ring.corners.size(); ++k) {
-    if (charts_.connectivity.face[ring.corners[k].corner] != cursor.face) continue;
-    return graph_.ports.nearest_port(point, unfolded_angle(charts_, ring, k, -cursor.direction));
+    if (charts_.connectivity.face[ring.corners[k].corner] != face) continue;
+    return graph_.ports.nearest_port(point, unfolded_angle(charts_, ring, k, -direction));
   }
   return kNoIndex;
+}
+
+SeparatrixGrowth::NearSingularity SeparatrixGrowth::near_singularity(const LineCursor& cursor,
+                                                                     const LineStep& step) const {
+  NearSingularity nearest;
+  if (!(step.length > 0)) return nearest;
+  const Eigen::Vector2d travel = (step.point - cursor.point) / step.length;
+  const Index first = charts_.first_corner(cursor.face);
+  for (Index h = first; h < first + 3; ++h) {
+    if (graph_.ports.point_of_vertex[charts_.vertex(h)] == kNoIndex) continue;
+    if (cursor.starts_at_corner && h == cursor.entry) continue;  // its own singularity
+    const Eigen::Vector2d to = charts_.uv(h) - cursor.point;
+    const double along = to.dot(travel), offset = cross(travel, to);
+    if (along < 0 || along > step.length + kNearSingularity) continue;
+    if (std::abs(offset) > kNearSingularity) continue;
+    if (nearest.corner == kNoIndex || along < nearest.along) nearest = {h, along, offset};
+  }
+  return nearest;
 }
 
 void SeparatrixGrowth::queue_end(const PendingEnd& end, double time) {
@@ -115,6 +134,19 @@ void SeparatrixGrowth::advance(Index line, double length_limit) {
   SeparatrixPiece piece{line,          cursor.face, cursor.point, step.point, cursor.direction,
                         cursor.length, step.length};
   const double room = length_limit - cursor.length;
+  const NearSingularity near = near_singularity(cursor, step);
+  if (near.corner != kNoIndex && near.along < room) {
+    const Eigen::Vector2d travel = (step.point - cursor.point) / step.length;
+    piece.to = cursor.point + near.along * travel;
+    piece.length = near.along;
+    s.length = cursor.length + near.along;
+    s.end = LineEnd::singularity;
+    s.end_vertex = charts_.vertex(near.corner);
+    queue_end({line, port_arriving(cursor.face, s.end_vertex, travel), near.offset, kNoIndex, {}},
+              s.length);
+    add_piece(piece);
+    return;
+  }
   if (step.length >= room) {
     if (step.length > 0)
       piece.to = cursor.point + (room / step.length) * (step.point - cursor.point);
@@ -125,18 +157,11 @@ void SeparatrixGrowth::advance(Index line, double length_limit) {
     return;
   }
   s.length = cursor.length + step.length;
-  if (step.vertex != kNoIndex && graph_.ports.point_of_vertex[step.vertex] != kNoIndex) {
-    s.end = LineEnd::singularity;
-    s.end_vertex = step.vertex;
-    queue_end({line, port_arriving(cursor, step.vertex), kNoIndex, {}}, s.length);
-    add_piece(piece);
-    return;
-  }
   add_piece(piece);
   const Index face = cursor.face;
   if (!cross_edge(charts_, step, cursor)) {
     s.end = LineEnd::boundary;
-    queue_end({line, kNoIndex, face, step.point}, s.length);
+    queue_end({line, kNoIndex, 0, face, step.point}, s.length);
   }
 }
 
@@ -219,7 +244,7 @@ void SeparatrixGrowth::handle(const Event& event) {
   const PendingEnd& end = pending_ends_[event.index];
   const Separatrix& s = graph_.separatrices[end.line];
   if (s.end == LineEnd::singularity)
-    collector_.on_singularity(graph_, end.line, end.port_hit, s.length);
+    collector_.on_singularity(graph_, end.line, end.port_hit, s.length, end.offset);
   else if (s.end == LineEnd::boundary)
     collector_.on_boundary(graph_, end.line, s.length, end.face, end.point);
 }

@@ -55,13 +55,21 @@ class SeparatrixGrowth {
   };
   struct PendingEnd {
     Index line = 0;
-    Index port_hit = kNoIndex;  // LineEnd::singularity: the port it arrives along
+    Index port_hit = kNoIndex;  // LineEnd::singularity: the port it arrives along,
+    double offset = 0;          //   and the singularity's signed distance (left > 0)
     Index face = kNoIndex;      // LineEnd::boundary: the exit point
     Eigen::Vector2d point = Eigen::Vector2d::Zero();
   };
+  // A singular corner of the cursor's face that the step passes (almost) through.
+  struct NearSingularity {
+    Index corner = kNoIndex;
+    double along = 0;   // distance travelled to the point nearest to it
+    double offset = 0;  // its signed distance from the line, left > 0
+  };
 
   void advance(Index line, double length_limit);
-  Index port_arriving(const LineCursor& cursor, Index vertex) const;
+  NearSingularity near_singularity(const LineCursor& cursor, const LineStep& step) const;
+  Index port_arriving(Index face, Index vertex, const Eigen::Vector2d& direction) const;
   void queue_end(const PendingEnd& end, double time);
   void add_piece(const SeparatrixPiece& piece);
   void discover(const SeparatrixPiece& a, const SeparatrixPiece& b);

@@ -66,7 +66,7 @@ struct Crossing {
 
 enum class EdgeKind : std::uint8_t {
   crossing,     // condition C1 at a crossing: the hypotenuse of base and height
-  singularity,  // a separatrix that ran into a singularity (height 0)
+  singularity,  // a separatrix that ran into a singularity (height: how far it passed it)
   boundary,     // a separatrix that ran into the boundary, to its virtual port (height 0)
 };
 
@@ -103,13 +103,12 @@ struct PortGraph {
   Ports ports;
   std::vector<Separatrix> separatrices;  // one per port
   std::vector<SeparatrixPiece> pieces;
-  std::vector<Crossing> crossings;  // K: the crossings that gave edges, and self-crossings
+  std::vector<Crossing> crossings;  // every intersection of two separatrices (or one with itself)
   std::vector<GraphEdge> edges;
   std::vector<VirtualPort> virtual_ports;  // node ports.ports.size() + i
   std::vector<EdgePair> zero_area;         // Z (Remark 4.2)
   std::vector<EdgePair> conflicts;         // I, including Z (Algorithm 1)
   double length_limit = 0;                 // L_max the separatrices were grown to
-  std::size_t crossings_found = 0;         // all intersections of separatrices handled
 
   std::size_t port_count() const { return ports.ports.size(); }
   std::size_t node_count() const { return port_count() + virtual_ports.size(); }

@@ -20,6 +20,11 @@
 
 namespace tessera::layout {
 
+// A line passing a singularity closer than this (parametric units) runs into it. Beyond a cone
+// point passed at the distance of the parameterization's noise a line's continuation is
+// meaningless, and on a symmetric mesh singularities that should line up do so only to that noise.
+inline constexpr double kNearSingularity = 1e-4;
+
 // The side of a point relative to a directed line; `on` (within the tolerance) acts as `right`.
 enum class Side : std::uint8_t { right, on, left };
 

@@ -1,0 +1,156 @@
+#include "layout/arcs.h"
+
+#include <cmath>
+
+#include "layout/trace.h"
+
+namespace tessera::layout {
+namespace {
+
+// Where the arc starts and how far it goes.
+struct ArcStart {
+  LineCursor cursor;
+  double length = 0;
+  Index target = kNoIndex;  // the far singularity's vertex; kNoIndex: the arc ends at the boundary
+};
+
+std::optional<ArcStart> arc_start(const Charts& charts, const PortGraph& graph,
+                                  const GraphEdge& edge) {
+  const Port& port = graph.ports.ports[edge.base_line];
+  if (port.corner == kNoIndex) return std::nullopt;
+  const SingularPoint& point = graph.ports.points[port.singular_point];
+  ArcStart start;
+  start.length = std::hypot(edge.base, edge.height);
+  if (edge.kind == EdgeKind::boundary) {
+    start.cursor = cursor_at_corner(charts, port.corner, port.direction);
+  } else {
+    const Index far = graph.ports.ports[edge.v].singular_point;
+    start.target = graph.ports.points[far].ring.vertex;
+    if (edge.height == 0) {
+      start.cursor = cursor_at_corner(charts, port.corner, port.direction);
+    } else {
+      // The hypotenuse turns from the port by atan(height / base), away from the height's side.
+      const double angle = port.angle + std::atan2(-edge.side * edge.height, edge.base);
+      const std::size_t k = corner_at_angle(charts, point.ring, angle);
+      if (k == point.ring.corners.size()) return std::nullopt;
+      start.cursor = cursor_at_corner(charts, point.ring.corners[k].corner,
+                                      direction_in_corner(charts, point.ring, k, angle));
+    }
+  }
+  return start;
+}
+
+SurfacePoint exit_point(const Charts& charts, const LineStep& step) {
+  if (step.vertex != kNoIndex) return {step.vertex, kNoIndex, 0};
+  const Connectivity& c = charts.connectivity;
+  const Index edge = c.edge[step.exit];
+  return {kNoIndex, edge, c.edge_halfedge[edge] == step.exit ? step.t : 1 - step.t};
+}
+
+// The corner of face f at vertex v, or kNoIndex.
+Index corner_of(const Charts& charts, Index f, Index v) {
+  const Index first = charts.first_corner(f);
+  for (Index h = first; h < first + 3; ++h)
+    if (charts.vertex(h) == v) return h;
+  return kNoIndex;
+}
+
+// True if the step passes a singularity other than the arc's ends closer than kNearSingularity:
+// the hypotenuse is not straight there.
+bool passes_singularity(const Charts& charts, const PortGraph& graph, const LineCursor& cursor,
+                        const LineStep& step, Index start, Index target) {
+  if (!(step.length > 0)) return false;
+  const Eigen::Vector2d travel = (step.point - cursor.point) / step.length;
+  for (Index h = charts.first_corner(cursor.face); h < charts.first_corner(cursor.face) + 3; ++h) {
+    const Index v = charts.vertex(h);
+    if (v == start || v == target || graph.ports.point_of_vertex[v] == kNoIndex) continue;
+    const Eigen::Vector2d to = charts.uv(h) - cursor.point;
+    const double along = to.dot(travel);
+    if (along >= 0 && along <= step.length && std::abs(cross(travel, to)) <= kNearSingularity)
+      return true;
+  }
+  return false;
+}
+
+void add_piece(Arc& arc, Index face, const SurfacePoint& from, const SurfacePoint& to,
+               const Eigen::Vector2d& from_uv, const Eigen::Vector2d& to_uv) {
+  if (from == to) return;  // a turn around a vertex the line passes through
+  arc.pieces.push_back({face, from, to, from_uv, to_uv});
+}
+
+}  // namespace
+
+std::optional<Arc> trace_arc(const Charts& charts, const PortGraph& graph, Index edge_index) {
+  const GraphEdge& edge = graph.edges[edge_index];
+  std::optional<ArcStart> found = arc_start(charts, graph, edge);
+  if (!found) return std::nullopt;
+  ArcStart& start = *found;
+  LineCursor& cursor = start.cursor;
+  Arc arc;
+  arc.edge = edge_index;
+  arc.length = start.length;
+  const Index origin = charts.vertex(cursor.entry);
+  SurfacePoint from{origin, kNoIndex, 0};
+  // Lengths within this of the end coincide with it (accumulated rounding along the arc).
+  const double slack = 1e-6 * (1 + start.length);
+  while (cursor.length <= start.length + slack) {
+    if (start.target != kNoIndex) {
+      const Index corner = corner_of(charts, cursor.face, start.target);
+      const Eigen::Vector2d end = cursor.point + (start.length - cursor.length) * cursor.direction;
+      if (corner != kNoIndex && (charts.uv(corner) - end).norm() <= slack) {
+        add_piece(arc, cursor.face, from, {start.target, kNoIndex, 0}, cursor.point,
+                  charts.uv(corner));
+        return arc;
+      }
+    }
+    const LineStep step = line_step(charts, cursor);
+    if (!step.valid || passes_singularity(charts, graph, cursor, step, origin, start.target)) break;
+    const SurfacePoint to = exit_point(charts, step);
+    add_piece(arc, cursor.face, from, to, cursor.point, step.point);
+    if (start.target != kNoIndex && step.vertex == start.target) return arc;
+    from = to;
+    if (!cross_edge(charts, step, cursor)) {
+      if (start.target == kNoIndex) return arc;
+      break;
+    }
+  }
+  return std::nullopt;
+}
+
+std::size_t remove_edges_without_arc(const Charts& charts, PortGraph& graph) {
+  std::vector<Index> renumbered(graph.edges.size(), kNoIndex);
+  std::vector<GraphEdge> kept;
+  for (Index e = 0; e < graph.edges.size(); ++e) {
+    if (!trace_arc(charts, graph, e)) continue;
+    renumbered[e] = static_cast<Index>(kept.size());
+    kept.push_back(graph.edges[e]);
+  }
+  const std::size_t removed = graph.edges.size() - kept.size();
+  graph.edges = std::move(kept);
+  std::vector<EdgePair> pairs;
+  for (const EdgePair& pair : graph.zero_area)
+    if (renumbered[pair.first] != kNoIndex && renumbered[pair.second] != kNoIndex)
+      pairs.push_back({renumbered[pair.first], renumbered[pair.second]});
+  graph.zero_area = std::move(pairs);
+  return removed;
+}
+
+Eigen::Vector3d position_of(const Mesh& mesh, const Connectivity& connectivity,
+                            const SurfacePoint& point) {
+  if (point.vertex != kNoIndex) return mesh.positions[point.vertex];
+  const Index h = connectivity.edge_halfedge[point.edge];
+  return (1 - point.t) * mesh.positions[connectivity.from_vertex(h)] +
+         point.t * mesh.positions[connectivity.to_vertex[h]];
+}
+
+std::vector<Eigen::Vector3d> arc_polyline(const Mesh& mesh, const Connectivity& connectivity,
+                                          const Arc& arc) {
+  std::vector<Eigen::Vector3d> polyline;
+  if (arc.pieces.empty()) return polyline;
+  polyline.push_back(position_of(mesh, connectivity, arc.pieces.front().from));
+  for (const ArcPiece& piece : arc.pieces)
+    polyline.push_back(position_of(mesh, connectivity, piece.to));
+  return polyline;
+}
+
+}  // namespace tessera::layout

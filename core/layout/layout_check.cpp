@@ -1,0 +1,226 @@
+#include "layout/layout_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include <Eigen/Geometry>
+
+#include "base/error.h"
+#include "mesh/connectivity.h"
+
+namespace tessera::layout {
+namespace {
+
+constexpr std::size_t kProblemsKept = 12;
+
+std::string vertex_list(const std::vector<Index>& vertices) {
+  std::string text;
+  for (std::size_t k = 0; k < vertices.size() && k < 8; ++k)
+    text += (k ? ", " : "") + std::to_string(vertices[k]);
+  return vertices.size() > 8 ? text + ", ..." : text;
+}
+
+class Checker {
+ public:
+  Checker(const Mesh& mesh, const std::vector<std::int32_t>& patch) : mesh_(mesh), patch_(patch) {}
+
+  LayoutCheck run() {
+    if (!check_cover()) return std::move(result_);
+    try {
+      c_ = build_connectivity(mesh_);
+    } catch (const Error& e) {
+      problem(std::string("the refined mesh is not a manifold: ") + e.what());
+      return std::move(result_);
+    }
+    find_nodes();
+    std::vector<std::vector<Index>> faces(result_.patch_count);
+    for (Index f = 0; f < mesh_.face_count(); ++f) faces[patch_[f]].push_back(f);
+    result_.corners.resize(result_.patch_count);
+    result_.neighbours.resize(result_.patch_count);
+    for (std::int32_t p = 0; p < std::int32_t(result_.patch_count); ++p) check_patch(p, faces[p]);
+    return std::move(result_);
+  }
+
+ private:
+  void problem(const std::string& text) {
+    if (result_.problems.size() < kProblemsKept) result_.problems.push_back(text);
+    ++result_.problem_count;
+  }
+
+  std::int32_t side_of(Index h) const {
+    return c_.is_boundary_halfedge(h) ? -1 : patch_[c_.face[h]];
+  }
+
+  bool check_cover() {
+    if (patch_.size() != mesh_.face_count()) {
+      problem("there are " + std::to_string(patch_.size()) + " patch ids for " +
+              std::to_string(mesh_.face_count()) + " faces");
+      return false;
+    }
+    std::int32_t highest = -1;
+    for (Index f = 0; f < patch_.size(); ++f) {
+      if (patch_[f] < 0) {
+        problem("face " + std::to_string(f) + " is in no patch");
+        return false;
+      }
+      highest = std::max(highest, patch_[f]);
+    }
+    result_.patch_count = std::size_t(highest + 1);
+    std::vector<bool> used(result_.patch_count, false);
+    for (std::int32_t p : patch_) used[p] = true;
+    for (std::size_t p = 0; p < used.size(); ++p)
+      if (!used[p]) problem("patch id " + std::to_string(p) + " has no face");
+    return true;
+  }
+
+  // The surface angle at a vertex: the sum of its corner angles in 3D.
+  double surface_angle(Index v, const std::vector<Index>& outgoing) const {
+    double total = 0;
+    for (Index h : outgoing) {
+      if (c_.is_boundary_halfedge(h)) continue;
+      const Eigen::Vector3d a = mesh_.positions[c_.to_vertex[h]] - mesh_.positions[v];
+      const Eigen::Vector3d b = mesh_.positions[c_.from_vertex(c_.prev[h])] - mesh_.positions[v];
+      total += std::atan2(a.cross(b).norm(), a.dot(b));
+    }
+    return total;
+  }
+
+  void find_nodes() {
+    is_node_.assign(mesh_.vertex_count(), false);
+    for (Index v = 0; v < mesh_.vertex_count(); ++v) {
+      const std::vector<Index> outgoing = outgoing_halfedges(c_, v);
+      const std::size_t n = outgoing.size();
+      if (n == 0) continue;
+      std::map<std::int32_t, int> runs_of;
+      std::size_t runs = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::int32_t here = side_of(outgoing[k]);
+        if (here != side_of(outgoing[(k + 1) % n])) {
+          ++runs;
+          ++runs_of[here];
+        }
+      }
+      for (const auto& [side, count] : runs_of)
+        if (side >= 0 && count > 1)
+          problem("patch " + std::to_string(side) + " touches itself at vertex " +
+                  std::to_string(v));
+      bool node = runs >= 3;
+      if (runs == 2 && c_.is_boundary_vertex(v))
+        node = std::abs(surface_angle(v, outgoing) - std::numbers::pi) > std::numbers::pi / 4;
+      is_node_[v] = node;
+      if (node) result_.nodes.push_back(v);
+    }
+  }
+
+  std::size_t components(const std::vector<Index>& faces, std::int32_t p) const {
+    std::map<Index, bool> seen;
+    for (Index f : faces) seen[f] = false;
+    std::size_t count = 0;
+    for (Index start : faces) {
+      if (seen[start]) continue;
+      ++count;
+      std::vector<Index> stack{start};
+      seen[start] = true;
+      while (!stack.empty()) {
+        const Index f = stack.back();
+        stack.pop_back();
+        for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h) {
+          const Index t = c_.twin[h];
+          if (c_.is_boundary_halfedge(t) || patch_[c_.face[t]] != p || seen[c_.face[t]]) continue;
+          seen[c_.face[t]] = true;
+          stack.push_back(c_.face[t]);
+        }
+      }
+    }
+    return count;
+  }
+
+  bool on_patch_boundary(Index h, std::int32_t p) const { return side_of(c_.twin[h]) != p; }
+
+  long euler_characteristic(const std::vector<Index>& faces, std::int32_t p) const {
+    std::vector<Index> vertices;
+    long edges = 0;
+    for (Index f : faces) {
+      for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h) {
+        vertices.push_back(c_.from_vertex(h));
+        edges += on_patch_boundary(h, p) || h < c_.twin[h];
+      }
+    }
+    std::sort(vertices.begin(), vertices.end());
+    const long v = std::unique(vertices.begin(), vertices.end()) - vertices.begin();
+    return v - edges + long(faces.size());
+  }
+
+  // The boundary loops of patch p, each as its halfedges in order (counterclockwise around p).
+  std::vector<std::vector<Index>> boundary_loops(const std::vector<Index>& faces,
+                                                 std::int32_t p) const {
+    std::map<Index, Index> leaving;  // vertex -> the boundary halfedge of p leaving it
+    for (Index f : faces)
+      for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h)
+        if (on_patch_boundary(h, p)) leaving[c_.from_vertex(h)] = h;
+    std::vector<std::vector<Index>> loops;
+    std::map<Index, bool> walked;
+    for (const auto& [vertex, first] : leaving) {
+      if (walked[first]) continue;
+      loops.emplace_back();
+      for (Index h = first; !walked[h];) {
+        walked[h] = true;
+        loops.back().push_back(h);
+        auto next = leaving.find(c_.to_vertex[h]);
+        if (next == leaving.end()) break;
+        h = next->second;
+      }
+    }
+    return loops;
+  }
+
+  void check_patch(std::int32_t p, const std::vector<Index>& faces) {
+    const std::string name = "patch " + std::to_string(p);
+    const std::size_t pieces = components(faces, p);
+    const long chi = euler_characteristic(faces, p);
+    const std::vector<std::vector<Index>> loops = boundary_loops(faces, p);
+    if (pieces != 1 || chi != 1 || loops.size() != 1) {
+      problem(name + " is not a disk (" + std::to_string(pieces) +
+              " pieces, Euler characteristic " + std::to_string(chi) + ", " +
+              std::to_string(loops.size()) + " boundary loops)");
+      return;
+    }
+    const std::vector<Index>& loop = loops.front();
+    std::vector<std::size_t> at;  // positions of the corners in the loop
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      if (is_node_[c_.from_vertex(loop[k])]) at.push_back(k);
+    std::vector<Index>& corners = result_.corners[p];
+    for (std::size_t k : at) corners.push_back(c_.from_vertex(loop[k]));
+    if (corners.size() != 4) {
+      problem(name + " has " + std::to_string(corners.size()) + " corners (vertices " +
+              vertex_list(corners) + ")");
+      return;
+    }
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t begin = at[k], end = k + 1 < 4 ? at[k + 1] : at[0] + loop.size();
+      const std::int32_t across = side_of(c_.twin[loop[begin]]);
+      result_.neighbours[p].push_back(across);
+      if (across < 0 || across < p) continue;
+      LayoutArc arc{{}, p, across};
+      for (std::size_t i = begin; i <= end; ++i)
+        arc.vertices.push_back(c_.from_vertex(loop[i % loop.size()]));
+      result_.arcs.push_back(std::move(arc));
+    }
+  }
+
+  const Mesh& mesh_;
+  const std::vector<std::int32_t>& patch_;
+  Connectivity c_;
+  std::vector<bool> is_node_;
+  LayoutCheck result_;
+};
+
+}  // namespace
+
+LayoutCheck check_layout(const Mesh& mesh, const std::vector<std::int32_t>& patch) {
+  return Checker(mesh, patch).run();
+}
+
+}  // namespace tessera::layout

@@ -1,0 +1,52 @@
+#include "layout/patches.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace tessera::layout {
+namespace {
+
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  std::size_t find(std::size_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void join(std::size_t a, std::size_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+}  // namespace
+
+std::vector<std::int32_t> assign_patches(const RefinedMesh& refined) {
+  const Mesh& mesh = refined.mesh;
+  const Connectivity c = build_connectivity(mesh);
+  DisjointSets sets(mesh.face_count());
+  for (Index h = 0; h < c.corner_count; ++h) {
+    const Index t = c.twin[h];
+    if (c.is_boundary_halfedge(t) || t < h) continue;
+    const std::pair<Index, Index> edge = std::minmax(c.from_vertex(h), c.to_vertex[h]);
+    if (std::binary_search(refined.arc_edges.begin(), refined.arc_edges.end(), edge)) continue;
+    sets.join(c.face[h], c.face[t]);
+  }
+  std::vector<std::int32_t> patch(mesh.face_count(), -1);
+  std::vector<std::int32_t> id_of_root(mesh.face_count(), -1);
+  std::int32_t next = 0;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    const std::size_t root = sets.find(f);
+    if (id_of_root[root] < 0) id_of_root[root] = next++;
+    patch[f] = id_of_root[root];
+  }
+  return patch;
+}
+
+}  // namespace tessera::layout

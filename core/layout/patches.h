@@ -1,0 +1,17 @@
+// Patches of a layout: the connected components of the refined mesh's faces, joined across every
+// edge that is not on an arc (LAYOUT_NOTES "The layout itself").
+//
+// In:  the mesh refined along the arcs. Out: per face its patch id, 0-based, numbered in the order
+//      of each patch's first face.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "layout/refine.h"
+
+namespace tessera::layout {
+
+std::vector<std::int32_t> assign_patches(const RefinedMesh& refined);
+
+}  // namespace tessera::layout

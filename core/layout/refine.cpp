@@ -1,0 +1,356 @@
+#include "layout/refine.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "base/error.h"
+
+namespace tessera::layout {
+namespace {
+
+using Barycentric = Eigen::Vector3d;
+
+// Edge parameters closer than this are one point (two arcs crossing on the edge).
+constexpr double kSamePoint = 1e-12;
+
+std::pair<Index, Index> sorted_pair(Index a, Index b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// The points the arcs put on input edges, numbered as refined vertices after the input's.
+class EdgePoints {
+ public:
+  EdgePoints(const Connectivity& c, const std::vector<Arc>& arcs) : points_(c.edge_count()) {
+    for (const Arc& arc : arcs) {
+      for (const ArcPiece& piece : arc.pieces) {
+        for (const SurfacePoint& p : {piece.from, piece.to})
+          if (p.edge != kNoIndex) points_[p.edge].push_back({p.t, kNoIndex});
+      }
+    }
+  }
+  // Sorts and merges the points of every edge and numbers them from `first` in edge order.
+  void number(Index first) {
+    Index next = first;
+    for (auto& list : points_) {
+      std::sort(list.begin(), list.end());
+      std::vector<std::pair<double, Index>> merged;
+      for (const auto& p : list)
+        if (merged.empty() || p.first - merged.back().first > kSamePoint)
+          merged.push_back({p.first, next++});
+      list = std::move(merged);
+    }
+  }
+  Index vertex_of(const SurfacePoint& p) const {
+    if (p.vertex != kNoIndex) return p.vertex;
+    const auto& list = points_[p.edge];
+    auto it = std::lower_bound(list.begin(), list.end(), std::pair{p.t - kSamePoint, Index(0)});
+    if (it == list.end()) --it;
+    return it->second;
+  }
+  const std::vector<std::pair<double, Index>>& on(Index edge) const { return points_[edge]; }
+
+ private:
+  std::vector<std::vector<std::pair<double, Index>>> points_;
+};
+
+// The arcs' pieces sorted by face: chords between two refined vertices, and the pieces that run
+// along an input edge (both ends input vertices) as refined-vertex chains.
+struct PiecesByFace {
+  std::vector<std::vector<std::pair<Index, Index>>> chords;
+  std::vector<std::pair<Index, Index>> along_edges;  // input vertex pairs
+};
+
+PiecesByFace sort_pieces(const Mesh& mesh, const std::vector<Arc>& arcs, const EdgePoints& points) {
+  PiecesByFace result;
+  result.chords.resize(mesh.face_count());
+  for (const Arc& arc : arcs) {
+    for (const ArcPiece& piece : arc.pieces) {
+      const Index a = points.vertex_of(piece.from), b = points.vertex_of(piece.to);
+      if (a == b) continue;
+      if (piece.from.vertex != kNoIndex && piece.to.vertex != kNoIndex)
+        result.along_edges.push_back(sorted_pair(a, b));
+      else
+        result.chords[piece.face].push_back(sorted_pair(a, b));
+    }
+  }
+  for (auto& list : result.chords) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return result;
+}
+
+// The arrangement of one face: nodes on its boundary cycle and at chord crossings, the edges
+// between them, its faces, their triangles.
+class FaceArrangement {
+ public:
+  FaceArrangement(const Charts& charts, const EdgePoints& points, Index face, RefinedMesh& out)
+      : charts_(charts), face_(face), out_(out) {
+    place_corners();
+    build_cycle(points);
+  }
+
+  void cut(const std::vector<std::pair<Index, Index>>& chords) {
+    std::vector<std::array<Index, 2>> local;
+    for (const auto& [a, b] : chords) local.push_back({local_node(a), local_node(b)});
+    std::vector<std::vector<std::pair<double, Index>>> along(local.size());
+    for (std::size_t i = 0; i < local.size(); ++i) {
+      for (std::size_t j = i + 1; j < local.size(); ++j) {
+        if (!interleave(local[i], local[j])) continue;
+        const auto [si, sj] = intersection(local[i], local[j]);
+        const Index node = add_node((1 - si) * bary_[local[i][0]] + si * bary_[local[i][1]]);
+        along[i].push_back({si, node});
+        along[j].push_back({sj, node});
+      }
+    }
+    for (std::size_t i = 0; i < local.size(); ++i) {
+      std::sort(along[i].begin(), along[i].end());
+      Index previous = local[i][0];
+      along[i].push_back({1.0, local[i][1]});
+      for (const auto& [s, node] : along[i]) {
+        connect(previous, node);
+        out_.arc_edges.push_back(sorted_pair(vertex_[previous], vertex_[node]));
+        previous = node;
+      }
+    }
+  }
+
+  void triangulate() {
+    for (std::size_t k = 0; k < cycle_.size(); ++k)
+      connect(cycle_[k], cycle_[(k + 1) % cycle_.size()]);
+    sort_neighbours();
+    std::vector<std::vector<bool>> used(adjacent_.size());
+    for (std::size_t v = 0; v < adjacent_.size(); ++v) used[v].assign(adjacent_[v].size(), false);
+    for (Index v = 0; v < adjacent_.size(); ++v) {
+      for (std::size_t k = 0; k < adjacent_[v].size(); ++k) {
+        if (used[v][k]) continue;
+        const std::vector<Index> polygon = walk_face(v, k, used);
+        if (signed_area(polygon) > 0) emit_polygon(polygon);
+      }
+    }
+  }
+
+ private:
+  void place_corners() {
+    const Index c = charts_.first_corner(face_);
+    for (int k = 0; k < 3; ++k) corner_position_[k] = charts_.mesh.positions[charts_.vertex(c + k)];
+    const Eigen::Vector3d e1 = corner_position_[1] - corner_position_[0];
+    const Eigen::Vector3d e2 = corner_position_[2] - corner_position_[0];
+    const Eigen::Vector3d x = e1.normalized();
+    const double along = e2.dot(x);
+    plane_[0] = {0, 0};
+    plane_[1] = {e1.norm(), 0};
+    plane_[2] = {along, (e2 - along * x).norm()};
+  }
+
+  void build_cycle(const EdgePoints& points) {
+    const Connectivity& c = charts_.connectivity;
+    const Index first = charts_.first_corner(face_);
+    for (int k = 0; k < 3; ++k) {
+      const Index h = first + k;
+      corner_node_[k] = add_node(Barycentric::Unit(k), charts_.vertex(h));
+      cycle_.push_back(corner_node_[k]);
+      const Index edge = c.edge[h];
+      const bool forward = c.edge_halfedge[edge] == h;
+      std::vector<std::pair<double, Index>> on_edge;
+      for (const auto& [t, vertex] : points.on(edge))
+        on_edge.push_back({forward ? t : 1 - t, vertex});
+      std::sort(on_edge.begin(), on_edge.end());
+      for (const auto& [s, vertex] : on_edge)
+        cycle_.push_back(
+            add_node((1 - s) * Barycentric::Unit(k) + s * Barycentric::Unit((k + 1) % 3), vertex));
+    }
+  }
+
+  Index add_node(const Barycentric& b, Index vertex = kNoIndex) {
+    if (vertex == kNoIndex) {
+      vertex = static_cast<Index>(out_.mesh.positions.size());
+      out_.mesh.positions.push_back(b[0] * corner_position_[0] + b[1] * corner_position_[1] +
+                                    b[2] * corner_position_[2]);
+    }
+    bary_.push_back(b);
+    vertex_.push_back(vertex);
+    adjacent_.emplace_back();
+    return static_cast<Index>(bary_.size() - 1);
+  }
+
+  Eigen::Vector2d planar(Index node) const {
+    return bary_[node][0] * plane_[0] + bary_[node][1] * plane_[1] + bary_[node][2] * plane_[2];
+  }
+
+  Index local_node(Index vertex) const {
+    for (Index k = 0; k < cycle_.size(); ++k)
+      if (vertex_[cycle_[k]] == vertex) return cycle_[k];
+    throw Error("an arc piece ends off its face's boundary");
+  }
+
+  // Chords cross iff exactly one end of one lies strictly between the ends of the other along the
+  // boundary cycle (cycle nodes are numbered in cycle order).
+  static bool interleave(const std::array<Index, 2>& p, const std::array<Index, 2>& q) {
+    if (p[0] == q[0] || p[0] == q[1] || p[1] == q[0] || p[1] == q[1]) return false;
+    const Index low = std::min(p[0], p[1]), high = std::max(p[0], p[1]);
+    const bool first_inside = q[0] > low && q[0] < high;
+    const bool second_inside = q[1] > low && q[1] < high;
+    return first_inside != second_inside;
+  }
+
+  // Parameters of the crossing along each chord.
+  std::pair<double, double> intersection(const std::array<Index, 2>& p,
+                                         const std::array<Index, 2>& q) const {
+    const Eigen::Vector2d a = planar(p[0]), da = planar(p[1]) - a;
+    const Eigen::Vector2d b = planar(q[0]), db = planar(q[1]) - b;
+    const double d = cross(da, db);
+    const double s = d == 0 ? 0.5 : cross(b - a, db) / d;
+    const double t = d == 0 ? 0.5 : cross(b - a, da) / d;
+    return {std::clamp(s, 0.0, 1.0), std::clamp(t, 0.0, 1.0)};
+  }
+
+  void connect(Index a, Index b) {
+    if (std::find(adjacent_[a].begin(), adjacent_[a].end(), b) != adjacent_[a].end()) return;
+    adjacent_[a].push_back(b);
+    adjacent_[b].push_back(a);
+  }
+
+  void sort_neighbours() {
+    for (Index v = 0; v < adjacent_.size(); ++v) {
+      const Eigen::Vector2d p = planar(v);
+      std::sort(adjacent_[v].begin(), adjacent_[v].end(), [&](Index a, Index b) {
+        const Eigen::Vector2d da = planar(a) - p, db = planar(b) - p;
+        return std::atan2(da.y(), da.x()) < std::atan2(db.y(), db.x());
+      });
+    }
+  }
+
+  // The face on the left of the directed edge v -> adjacent_[v][k]: at each node turn to the
+  // neighbour next clockwise from the one we came from.
+  std::vector<Index> walk_face(Index v, std::size_t k, std::vector<std::vector<bool>>& used) const {
+    std::vector<Index> polygon;
+    Index from = v;
+    std::size_t slot = k;
+    while (!used[from][slot]) {
+      used[from][slot] = true;
+      polygon.push_back(from);
+      const Index to = adjacent_[from][slot];
+      const auto& around = adjacent_[to];
+      const std::size_t back = std::find(around.begin(), around.end(), from) - around.begin();
+      slot = (back + around.size() - 1) % around.size();
+      from = to;
+    }
+    return polygon;
+  }
+
+  double signed_area(const std::vector<Index>& polygon) const {
+    double area = 0;
+    for (std::size_t k = 0; k < polygon.size(); ++k)
+      area += cross(planar(polygon[k]), planar(polygon[(k + 1) % polygon.size()]));
+    return area / 2;
+  }
+
+  double triangle_area(Index a, Index b, Index c) const {
+    return cross(planar(b) - planar(a), planar(c) - planar(a)) / 2;
+  }
+
+  // A convex polygon: fanned from the first corner whose fan has no flat triangle, or else from an
+  // added centre point.
+  void emit_polygon(const std::vector<Index>& polygon) {
+    const std::size_t n = polygon.size();
+    const double flat = 1e-12 * triangle_area(corner_node_[0], corner_node_[1], corner_node_[2]);
+    for (std::size_t apex = 0; apex < n; ++apex) {
+      bool good = true;
+      for (std::size_t i = 1; i + 1 < n && good; ++i)
+        good = triangle_area(polygon[apex], polygon[(apex + i) % n], polygon[(apex + i + 1) % n]) >
+               flat;
+      if (!good) continue;
+      for (std::size_t i = 1; i + 1 < n; ++i)
+        emit_triangle(polygon[apex], polygon[(apex + i) % n], polygon[(apex + i + 1) % n]);
+      return;
+    }
+    Barycentric centre = Barycentric::Zero();
+    for (Index node : polygon) centre += bary_[node] / double(n);
+    const Index middle = add_node(centre);
+    for (std::size_t i = 0; i < n; ++i) emit_triangle(middle, polygon[i], polygon[(i + 1) % n]);
+  }
+
+  void emit_triangle(Index a, Index b, Index c) {
+    out_.mesh.add_face({vertex_[a], vertex_[b], vertex_[c]});
+    out_.parent.push_back(face_);
+    const Index first = charts_.first_corner(face_);
+    for (Index node : {a, b, c}) {
+      const Barycentric& w = bary_[node];
+      out_.uv.push_back(w[0] * charts_.uv(first) + w[1] * charts_.uv(first + 1) +
+                        w[2] * charts_.uv(first + 2));
+    }
+  }
+
+  const Charts& charts_;
+  Index face_;
+  RefinedMesh& out_;
+  std::array<Eigen::Vector3d, 3> corner_position_;
+  std::array<Eigen::Vector2d, 3> plane_;
+  std::array<Index, 3> corner_node_{};
+  std::vector<Index> cycle_;
+  std::vector<Barycentric> bary_;
+  std::vector<Index> vertex_;
+  std::vector<std::vector<Index>> adjacent_;
+};
+
+void copy_face(const Charts& charts, Index face, RefinedMesh& out) {
+  const Index first = charts.first_corner(face);
+  out.mesh.add_face({charts.vertex(first), charts.vertex(first + 1), charts.vertex(first + 2)});
+  out.parent.push_back(face);
+  for (Index h = first; h < first + 3; ++h) out.uv.push_back(charts.uv(h));
+}
+
+// Runs along input edges: every stretch between consecutive refined vertices is on the arc.
+void add_along_edges(const Charts& charts, const std::vector<std::pair<Index, Index>>& along,
+                     const EdgePoints& points, RefinedMesh& out) {
+  const Connectivity& c = charts.connectivity;
+  for (const auto& [a, b] : along) {
+    for (Index h : outgoing_halfedges(c, a)) {
+      if (c.to_vertex[h] != b) continue;
+      const Index edge = c.edge[h];
+      const Index origin = c.from_vertex(c.edge_halfedge[edge]);
+      Index previous = origin;
+      for (const auto& [t, vertex] : points.on(edge)) {
+        out.arc_edges.push_back(sorted_pair(previous, vertex));
+        previous = vertex;
+      }
+      out.arc_edges.push_back(sorted_pair(previous, origin == a ? b : a));
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+RefinedMesh refine_along_arcs(const Charts& charts, const std::vector<Arc>& arcs) {
+  const Mesh& mesh = charts.mesh;
+  const Connectivity& c = charts.connectivity;
+  RefinedMesh out;
+  out.mesh.positions = mesh.positions;
+  EdgePoints points(c, arcs);
+  points.number(static_cast<Index>(mesh.vertex_count()));
+  for (Index e = 0; e < c.edge_count(); ++e)
+    for (const auto& point : points.on(e))
+      out.mesh.positions.push_back(position_of(mesh, c, {kNoIndex, e, point.first}));
+  const PiecesByFace pieces = sort_pieces(mesh, arcs, points);
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    const Index first = charts.first_corner(f);
+    bool touched = !pieces.chords[f].empty();
+    for (Index h = first; h < first + 3 && !touched; ++h) touched = !points.on(c.edge[h]).empty();
+    if (!touched) {
+      copy_face(charts, f, out);
+      continue;
+    }
+    FaceArrangement arrangement(charts, points, f, out);
+    arrangement.cut(pieces.chords[f]);
+    arrangement.triangulate();
+  }
+  add_along_edges(charts, pieces.along_edges, points, out);
+  std::sort(out.arc_edges.begin(), out.arc_edges.end());
+  out.arc_edges.erase(std::unique(out.arc_edges.begin(), out.arc_edges.end()), out.arc_edges.end());
+  return out;
+}
+
+}  // namespace tessera::layout
