@@ -16,5 +16,6 @@ int regmap_command(const Args& args);
 int field_command(const Args& args);
 int param_command(const Args& args);
 int solve_command(const Args& args);
+int layout_command(const Args& args);
 
 }  // namespace tessera::cli

@@ -17,6 +17,8 @@ struct Limits {
   std::size_t max_tiling_triangles = 250'000;  // --max-triangles (Tri(G) of a regular map)
   std::size_t max_trace_steps = 20'000'000;    // --max-trace-steps (faces crossed by all
                                                //   separatrices of a quad layout)
+  double max_trace_seconds = 60.0;             // --max-trace-seconds (growing them)
+  double max_solve_seconds = 60.0;             // --max-solve-seconds (program P1 of a layout)
   std::size_t max_matching_nodes = 1'000'000;       // --max-nodes (ports of a P1 instance)
   std::size_t max_matching_edges = 4'000'000;       // --max-edges (edges of a P1 instance)
   std::size_t max_matching_conflicts = 40'000'000;  // --max-conflicts (conflict pairs of P1)

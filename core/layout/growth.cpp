@@ -1,6 +1,7 @@
 #include "layout/growth.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -15,6 +16,12 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kLengthTolerance = 1e-7;
 // Two intersections of the same two lines closer than this (in both lengths) are one.
 constexpr double kSameCrossing = 1e-6;
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 bool along_u(const Eigen::Vector2d& d) {
   return std::abs(d.x()) > std::abs(d.y());
@@ -73,6 +80,7 @@ void SeparatrixGrowth::grow(double length_limit, const Progress& progress) {
     return graph_.separatrices[line].end == LineEnd::growing;
   };
   std::size_t since_report = 0;
+  const Clock::time_point start = Clock::now();
   while (true) {
     while (!growing.empty() && !is_growing(growing.top().second)) growing.pop();
     handle_events_until(growing.empty() ? kInfinity : growing.top().first);
@@ -84,9 +92,18 @@ void SeparatrixGrowth::grow(double length_limit, const Progress& progress) {
     if (is_growing(line)) growing.push({cursors_[line].length, line});
     if (++since_report == 4096) {
       since_report = 0;
+      check_clock(start);
       progress.step("separatrices", std::min(1.0, cursors_[line].length / length_limit));
     }
   }
+  seconds_ += seconds_since(start);
+}
+
+void SeparatrixGrowth::check_clock(Clock::time_point start) const {
+  if (seconds_ + seconds_since(start) <= options_.max_seconds) return;
+  throw LimitError("growing the separatrices ran longer than " +
+                   format_seconds(options_.max_seconds) + " after " + std::to_string(steps_) +
+                   " faces crossed; raise the limit with --max-trace-seconds or lower L_max");
 }
 
 Index SeparatrixGrowth::port_arriving(Index face, Index vertex,

@@ -13,6 +13,7 @@
 // separatrices stopped by L_max continue, everything found so far stays.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <map>
 #include <queue>
@@ -31,14 +32,18 @@ namespace tessera::layout {
 struct GrowthOptions {
   double rho = 10;                                   // spiral test threshold (Sec. 6.8)
   std::size_t max_steps = Limits{}.max_trace_steps;  // faces entered by all separatrices
+  double max_seconds = Limits{}.max_trace_seconds;   // wall time of all grow() calls
 };
 
 class SeparatrixGrowth {
  public:
+  using Clock = std::chrono::steady_clock;
+
   SeparatrixGrowth(const Charts& charts, Ports ports, const GrowthOptions& options);
 
   // Grows every separatrix not yet stopped to `length_limit`. Throws LimitError when the steps of
-  // all separatrices exceed options.max_steps, CancelledError when cancelled.
+  // all separatrices exceed options.max_steps or the time options.max_seconds, CancelledError
+  // when cancelled.
   void grow(double length_limit, const Progress& progress);
 
   const PortGraph& graph() const { return graph_; }
@@ -77,6 +82,7 @@ class SeparatrixGrowth {
   void handle_events_until(double time);
   void handle(const Event& event);
   void stop(Index line, double time);
+  void check_clock(Clock::time_point start) const;
 
   Charts charts_;
   GrowthOptions options_;
@@ -89,6 +95,7 @@ class SeparatrixGrowth {
   std::map<std::pair<Index, Index>, std::vector<std::pair<double, double>>> found_;
   std::priority_queue<Event, std::vector<Event>, std::greater<>> events_;
   std::size_t steps_ = 0;
+  double seconds_ = 0;  // spent in grow()
 };
 
 }  // namespace tessera::layout

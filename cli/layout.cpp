@@ -1,0 +1,132 @@
+// tessera layout <mesh>: the quad layout of a triangle mesh (thesis Ch. 3-6): cross field, seamless
+// parameterization, separatrices and the graph of the ports, program P1, the layout and its check.
+#include <chrono>
+#include <cstdio>
+
+#include "commands.h"
+#include "export/glb.h"
+#include "export/write_mesh.h"
+#include "export/writers.h"
+#include "field_input.h"
+#include "layout/layout_json.h"
+#include "layout/layout_scene.h"
+#include "mesh_input.h"
+#include "param/seamless_param.h"
+
+namespace tessera::cli {
+namespace {
+
+void print_layout_help() {
+  std::printf(
+      "usage: tessera layout <mesh> [--alpha 5] [--rho 10] [--h REL] [--field F] [-o layout.glb]\n"
+      "                      [--ply layout.ply] [--json] [field options] [options]\n\n"
+      "Computes the quad layout of a triangle mesh as a minimum-weight perfect matching of the\n"
+      "singularities' ports with conflict pairs (thesis Ch. 3-6): a cross field (or --field), its\n"
+      "seamless parameterization, the separatrices grown from every port at unit speed, the edges\n"
+      "of the port graph by the ratio test with singularity-free triangles, the illegal\n"
+      "crossings, program P1 solved with GLPK, the mesh cut along the chosen arcs into patches,\n"
+      "and the project's validity check (every patch a disk with four corners).\n\n"
+      "  --alpha A            edge weight L_base + A * L_height (default 5; 0 gives the coarsest\n"
+      "                       layout, larger values follow the field more closely)\n"
+      "  --rho R              spiral test threshold (default 10)\n"
+      "  --h REL              parameter unit as a fraction of the bounding-box diagonal (0.01)\n"
+      "  -o FILE.glb          the refined mesh coloured by patch with a per-face _PATCH\n"
+      "                       attribute, the arcs as lines, the singularities as points\n"
+      "  --ply FILE.ply       the refined mesh with an integer face property 'patch'\n"
+      "  --json               one JSON object on stdout: singularities, graph_edges, conflicts,\n"
+      "                       patches, angle_rsd (percent), valid, objective, seconds (per\n"
+      "                       stage), and alpha, ports, virtual_ports, nodes, arcs,\n"
+      "                       matching_status, lower_bound, curved_edges, length_limit,\n"
+      "                       length_doublings, average_separatrix_length, problems\n"
+      "  --max-trace-steps N  faces crossed by all separatrices together (default 20000000)\n"
+      "  --max-trace-seconds S  time for growing the separatrices (default 60)\n"
+      "  --max-solve-seconds S  time for program P1 (default 60; the best matching found is used)\n"
+      "%s%s\n"
+      "Exit codes: 0 ok (also for a layout the checker rejects: 'valid' says so), 1 internal\n"
+      "error, 2 bad input (the message says what and where).\n",
+      kFieldInputHelp, kMeshInputHelp);
+}
+
+layout::LayoutOptions layout_options(const ParsedArgs& parsed) {
+  layout::LayoutOptions options;
+  options.rho = parsed.number("--rho", options.rho);
+  if (!(options.rho > 1)) throw UsageError("--rho expects a number above 1");
+  Limits& limits = options.limits;
+  limits.max_trace_steps = parsed.count("--max-trace-steps", limits.max_trace_steps);
+  limits.max_trace_seconds = parsed.number("--max-trace-seconds", limits.max_trace_seconds);
+  limits.max_solve_seconds = parsed.number("--max-solve-seconds", limits.max_solve_seconds);
+  if (!(limits.max_trace_seconds > 0) || !(limits.max_solve_seconds > 0))
+    throw UsageError("--max-trace-seconds and --max-solve-seconds expect positive numbers");
+  return options;
+}
+
+std::string layout_text(const nlohmann::ordered_json& json) {
+  char text[512];
+  std::snprintf(
+      text, sizeof text,
+      "%d singularities, %d ports (%d virtual), %d graph edges, %d conflicts\n"
+      "P1 %s, objective %s; %d patches, %d nodes, %d arcs, angle RSD %.2f %%\nlayout %s\n",
+      json["singularities"].get<int>(), json["ports"].get<int>(), json["virtual_ports"].get<int>(),
+      json["graph_edges"].get<int>(), json["conflicts"].get<int>(),
+      json["matching_status"].get<std::string>().c_str(), json["objective"].dump().c_str(),
+      json["patches"].get<int>(), json["nodes"].get<int>(), json["arcs"].get<int>(),
+      json["angle_rsd"].get<double>(), json["valid"].get<bool>() ? "valid" : "INVALID");
+  std::string result = text;
+  for (const auto& problem : json["problems"]) result += "  " + problem.get<std::string>() + "\n";
+  for (const auto& [stage, seconds] : json["seconds"].items()) {
+    std::snprintf(text, sizeof text, "  %-14s %.3f s\n", stage.c_str(), seconds.get<double>());
+    result += text;
+  }
+  return result;
+}
+
+}  // namespace
+
+int layout_command(const Args& args) {
+  std::set<std::string> values = mesh_input_options();
+  values.merge(field_input_options());
+  values.insert({"--alpha", "--rho", "--h", "-o", "--ply", "--max-trace-steps",
+                 "--max-trace-seconds", "--max-solve-seconds"});
+  const ParsedArgs parsed = parse_args(args, values, {"--json", "--help", "-h"}, "layout");
+  if (parsed.has("--help") || parsed.has("-h")) {
+    print_layout_help();
+    return 0;
+  }
+  if (parsed.positional.size() != 1)
+    throw UsageError("'tessera layout' takes one mesh file; run 'tessera layout --help'");
+  const double alpha = parsed.number("--alpha", 5);
+  if (!(alpha >= 0)) throw UsageError("--alpha expects a number >= 0");
+  ParamOptions param_options;
+  param_options.h_relative = parsed.number("--h", param_options.h_relative);
+  if (!(param_options.h_relative > 0)) throw UsageError("--h expects a positive number");
+  const layout::LayoutOptions options = layout_options(parsed);
+
+  const LoadedMesh loaded = load_mesh_argument(parsed.positional[0], parsed);
+  for (const std::string& warning : loaded.report.warnings)
+    std::fprintf(stderr, "tessera: warning: %s\n", warning.c_str());
+  const Mesh mesh = triangles_of(loaded.mesh);
+  const Progress progress = stderr_progress();
+  const auto start = std::chrono::steady_clock::now();
+  const Connectivity connectivity = build_connectivity(mesh);
+  const FaceFrames frames = face_frames(mesh);
+  const CrossField field = field_from_arguments(mesh, connectivity, frames, parsed, progress);
+  const SeamlessParam param =
+      seamless_parameterization(mesh, connectivity, frames, field, param_options, progress);
+  const double param_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const layout::Charts charts{mesh, connectivity, param};
+  layout::LayoutGraph graph = layout::build_layout_graph(charts, options, progress);
+  graph.seconds.insert(graph.seconds.begin(), {"field and param", param_seconds});
+  const layout::QuadLayout result =
+      layout::solve_layout(charts, graph, alpha, options.limits, progress);
+
+  if (parsed.has("-o"))
+    write_file_bytes(parsed.value("-o"), write_glb(layout::layout_scene(charts, graph, result)));
+  if (parsed.has("--ply")) write_file_bytes(parsed.value("--ply"), write_ply(result.refined.mesh));
+  const nlohmann::ordered_json json = layout::layout_json(graph, result);
+  std::printf("%s",
+              parsed.has("--json") ? (json.dump(2) + "\n").c_str() : layout_text(json).c_str());
+  return 0;
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,44 @@
+#include "layout/layout_json.h"
+
+#include <cmath>
+
+namespace tessera::layout {
+namespace {
+
+// JSON has no infinity: a missing bound or objective is null.
+nlohmann::ordered_json finite_or_null(double x) {
+  return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& layout) {
+  const PortGraph& g = graph.graph;
+  nlohmann::ordered_json json;
+  json["singularities"] = g.ports.points.size();
+  json["graph_edges"] = g.edges.size();
+  json["conflicts"] = g.conflicts.size();
+  json["patches"] = layout.check.patch_count;
+  json["angle_rsd"] = layout.angle_rsd;
+  json["valid"] = layout.check.valid();
+  json["objective"] = finite_or_null(layout.matching.objective);
+  nlohmann::ordered_json seconds = nlohmann::ordered_json::object();
+  for (const StageSeconds& s : graph.seconds) seconds[s.stage] = s.seconds;
+  for (const StageSeconds& s : layout.seconds) seconds[s.stage] = s.seconds;
+  json["seconds"] = seconds;
+  json["alpha"] = layout.alpha;
+  json["ports"] = g.port_count();
+  json["virtual_ports"] = g.virtual_ports.size();
+  json["nodes"] = layout.check.nodes.size();
+  json["arcs"] = layout.check.arcs.size();
+  json["matching_status"] = matching::to_string(layout.matching.status);
+  json["lower_bound"] = finite_or_null(layout.matching.lower_bound);
+  json["curved_edges"] = graph.curved_edges;
+  json["length_limit"] = g.length_limit;
+  json["length_doublings"] = graph.length_doublings;
+  json["average_separatrix_length"] = average_separatrix_length(g);
+  json["problems"] = layout.check.problems;
+  return json;
+}
+
+}  // namespace tessera::layout

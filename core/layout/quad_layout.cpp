@@ -1,0 +1,92 @@
+#include "layout/quad_layout.h"
+
+#include <chrono>
+
+#include "layout/conflicts.h"
+#include "layout/growth.h"
+#include "layout/metrics.h"
+#include "layout/p1.h"
+#include "layout/patches.h"
+#include "matching/glpk_solver.h"
+#include "mesh/geometry.h"
+
+namespace tessera::layout {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+class StageClock {
+ public:
+  explicit StageClock(std::vector<StageSeconds>& seconds) : seconds_(seconds) {}
+  void stage_done(const std::string& stage) {
+    const Clock::time_point now = Clock::now();
+    seconds_.push_back({stage, std::chrono::duration<double>(now - last_).count()});
+    last_ = now;
+  }
+
+ private:
+  std::vector<StageSeconds>& seconds_;
+  Clock::time_point last_ = Clock::now();
+};
+
+}  // namespace
+
+LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& options,
+                               const Progress& progress) {
+  LayoutGraph result;
+  StageClock clock(result.seconds);
+  SeparatrixGrowth growth(
+      charts, find_ports(charts),
+      {options.rho, options.limits.max_trace_steps, options.limits.max_trace_seconds});
+  double length_limit =
+      options.length_factor * bounding_box(charts.mesh).diagonal() / charts.param.h;
+  while (true) {
+    growth.grow(length_limit, progress);
+    result.graph = growth.graph();
+    result.curved_edges = remove_edges_without_arc(charts, result.graph);
+    result.has_perfect_matching = has_perfect_matching(matching_problem(result.graph, 0));
+    if (result.has_perfect_matching || result.length_doublings == options.max_length_doublings)
+      break;
+    length_limit *= 2;
+    ++result.length_doublings;
+  }
+  clock.stage_done("separatrices");
+  result.graph.conflicts = illegal_crossings(result.graph, progress);
+  clock.stage_done("conflicts");
+  return result;
+}
+
+QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
+                        const Limits& limits, const Progress& progress) {
+  QuadLayout layout;
+  layout.alpha = alpha;
+  StageClock clock(layout.seconds);
+  matching::GlpkConfig config;
+  config.clique_rows = true;
+  config.cuts = true;
+  layout.matching = matching::solve_with_glpk(matching_problem(graph.graph, alpha), config,
+                                              limits.max_solve_seconds, progress);
+  clock.stage_done("P1");
+  for (std::uint32_t e : layout.matching.edges) {
+    progress.step("arcs", double(layout.arcs.size()) / double(layout.matching.edges.size()));
+    layout.arcs.push_back(*trace_arc(charts, graph.graph, e));
+  }
+  layout.refined = refine_along_arcs(charts, layout.arcs);
+  std::vector<std::int32_t> patch = assign_patches(layout.refined);
+  clock.stage_done("layout");
+  layout.check = check_layout(layout.refined.mesh, patch);
+  layout.angle_rsd =
+      relative_standard_deviation(corner_angles(layout.refined, patch, layout.check));
+  layout.refined.mesh.face_attributes["patch"] = std::move(patch);
+  clock.stage_done("check");
+  return layout;
+}
+
+double average_separatrix_length(const PortGraph& graph) {
+  if (graph.separatrices.empty()) return 0;
+  double total = 0;
+  for (const Separatrix& s : graph.separatrices) total += s.length;
+  return total / double(graph.separatrices.size());
+}
+
+}  // namespace tessera::layout

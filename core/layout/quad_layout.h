@@ -1,0 +1,67 @@
+// The quad layout of a triangle mesh with a seamless parameterization (thesis Ch. 4-6), in two
+// steps so that a change of alpha reruns only the second (SPEC "Data flow"):
+//  1. build_layout_graph(): ports, motorcycle growing to L_max = length_factor * diameter / h
+//     (Sec. 6.9, the diameter taken as the bounding-box diagonal), the edges whose hypotenuse is
+//     straight, and, if G has no perfect matching, growing on with L_max doubled (Sec. 5.1); then
+//     the conflicts I (Sec. 4.6);
+//  2. solve_layout(): program P1 with w = L_base + alpha L_height (Ch. 5) by GLPK (core/matching),
+//     the chosen edges traced as arcs, the mesh refined along them, patches, the validity check,
+//     the angle RSD.
+//
+// In:  the charts of M_f (charts.h), options. Out: plain values; the refined mesh carries the face
+//      attribute "patch". Throws LimitError (tracing steps or time), CancelledError.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "base/limits.h"
+#include "base/progress.h"
+#include "layout/arcs.h"
+#include "layout/layout_check.h"
+#include "layout/port_graph.h"
+#include "layout/refine.h"
+#include "matching/result.h"
+
+namespace tessera::layout {
+
+struct LayoutOptions {
+  double rho = 10;               // spiral test (6.7), (6.8)
+  double length_factor = 3;      // L_max = length_factor * diameter / h, in parameter units
+  int max_length_doublings = 3;  // Sec. 5.1: while G has no perfect matching
+  Limits limits;                 // max_trace_steps, max_trace_seconds, max_solve_seconds
+};
+
+struct StageSeconds {
+  std::string stage;
+  double seconds = 0;
+};
+
+struct LayoutGraph {
+  PortGraph graph;
+  std::size_t curved_edges = 0;  // candidates dropped: their hypotenuse is not straight
+  int length_doublings = 0;      // of L_max, until G had a perfect matching
+  bool has_perfect_matching = false;
+  std::vector<StageSeconds> seconds;
+};
+
+struct QuadLayout {
+  double alpha = 0;
+  matching::MatchingResult matching;
+  std::vector<Arc> arcs;
+  RefinedMesh refined;  // refined.mesh.face_attributes["patch"]
+  LayoutCheck check;
+  double angle_rsd = 0;  // percent, over all patch corners (parameter space)
+  std::vector<StageSeconds> seconds;
+};
+
+LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& options,
+                               const Progress& progress);
+
+QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
+                        const Limits& limits, const Progress& progress);
+
+// The mean length of the separatrices as grown (Table 6.1).
+double average_separatrix_length(const PortGraph& graph);
+
+}  // namespace tessera::layout

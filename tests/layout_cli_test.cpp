@@ -1,0 +1,67 @@
+// tessera layout on a generated mesh: the JSON keys of issue 4 with a valid layout, the PLY with an
+// integer face property 'patch', the GLB with the _PATCH attribute, arcs and singularities, exit
+// codes for bad options.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_run.h"
+#include "export/writers.h"
+#include "mesh/load.h"
+#include "mesh/readers.h"
+#include "mesh/shapes.h"
+#include "mesh_test_util.h"
+
+namespace tessera {
+namespace {
+
+using test::run_cli;
+using test::temp_path;
+using test::write_temp_file;
+
+std::string quoted(const std::string& path) {
+  return "'" + path + "'";
+}
+
+TEST(CliLayout, WritesJsonPlyAndGlb) {
+  const std::string path = write_temp_file("sphere.obj", write_obj(icosphere(3)));
+  const std::string ply = temp_path("layout.ply"), glb = temp_path("layout.glb");
+  const auto result = run_cli("layout --json " + quoted(path) + " --alpha 5 --ply " + quoted(ply) +
+                              " -o " + quoted(glb));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const auto json = nlohmann::json::parse(result.out);
+  for (const char* key : {"singularities", "graph_edges", "conflicts", "patches", "angle_rsd",
+                          "valid", "objective", "seconds"})
+    EXPECT_TRUE(json.contains(key)) << key;
+  EXPECT_EQ(json["singularities"], 8);
+  EXPECT_TRUE(json["valid"].get<bool>());
+  EXPECT_GT(json["graph_edges"].get<int>(), json["ports"].get<int>());
+  for (const char* stage : {"separatrices", "conflicts", "P1", "layout", "check"})
+    EXPECT_TRUE(json["seconds"].contains(stage)) << stage;
+
+  const LoadedMesh refined = load_mesh_file(ply);
+  const auto& patch = refined.mesh.face_attributes.at("patch");
+  EXPECT_EQ(*std::max_element(patch.begin(), patch.end()) + 1, json["patches"].get<int>());
+  EXPECT_EQ(*std::min_element(patch.begin(), patch.end()), 0);
+
+  const std::vector<std::uint8_t> bytes = read_file_bytes(glb, Limits{});
+  const std::string text(bytes.begin(), bytes.end());
+  EXPECT_EQ(text.substr(0, 4), "glTF");
+  for (const char* name : {"_PATCH", "arcs", "singularities valence 3", "angle_rsd"})
+    EXPECT_NE(text.find(name), std::string::npos) << name;
+}
+
+TEST(CliLayout, BadOptionsExitWithTwo) {
+  const std::string path = write_temp_file("sphere.obj", write_obj(icosphere(1)));
+  EXPECT_EQ(run_cli("layout " + quoted(path) + " --alpha -1").exit_code, 2);
+  EXPECT_EQ(run_cli("layout " + quoted(path) + " --rho 0.5").exit_code, 2);
+  EXPECT_EQ(run_cli("layout " + quoted(path) + " --max-solve-seconds 0").exit_code, 2);
+  EXPECT_EQ(run_cli("layout").exit_code, 2);
+  EXPECT_EQ(run_cli("layout --help").exit_code, 0);
+  const auto limited = run_cli("layout " + quoted(path) + " --max-trace-steps 10", true);
+  EXPECT_EQ(limited.exit_code, 2);
+  EXPECT_NE(limited.out.find("--max-trace-steps"), std::string::npos) << limited.out;
+}
+
+}  // namespace
+}  // namespace tessera
