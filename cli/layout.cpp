@@ -24,11 +24,12 @@ void print_layout_help() {
       "singularities' ports with conflict pairs (thesis Ch. 3-6): a cross field (or --field), its\n"
       "seamless parameterization, the separatrices grown from every port at unit speed, the edges\n"
       "of the port graph by the ratio test with singularity-free triangles, the illegal\n"
-      "crossings, program P1 solved with GLPK, the mesh cut along the chosen arcs into patches,\n"
+      "crossings, program P1 solved exactly, the mesh cut along the chosen arcs into patches,\n"
       "and the project's validity check (every patch a disk with four corners).\n\n"
       "  --alpha A            edge weight L_base + A * L_height (default 5; 0 gives the coarsest\n"
       "                       layout, larger values follow the field more closely)\n"
       "  --rho R              spiral test threshold (default 10)\n"
+      "  --solver S           P1 solver: exact (default), glpk (the plain model) or glpk-tuned\n"
       "  --h REL              parameter unit as a fraction of the bounding-box diagonal (0.01)\n"
       "  -o FILE.glb          the refined mesh coloured by patch with a per-face _PATCH\n"
       "                       attribute, the arcs as lines, the singularities as points\n"
@@ -36,8 +37,9 @@ void print_layout_help() {
       "  --json               one JSON object on stdout: singularities, graph_edges, conflicts,\n"
       "                       patches, angle_rsd (percent), valid, objective, seconds (per\n"
       "                       stage), and alpha, ports, virtual_ports, nodes, arcs,\n"
-      "                       matching_status, lower_bound, curved_edges, length_limit,\n"
-      "                       length_doublings, average_separatrix_length, problems\n"
+      "                       solver, matching_status, lower_bound, curved_edges,\n"
+      "                       length_limit, length_doublings, unmatchable_ports,\n"
+      "                       average_separatrix_length, problems\n"
       "  --max-trace-steps N  faces crossed by all separatrices together (default 20000000)\n"
       "  --max-trace-seconds S  time for growing the separatrices (default 60)\n"
       "  --max-solve-seconds S  time for program P1 (default 60; the best matching found is used)\n"
@@ -85,7 +87,7 @@ std::string layout_text(const nlohmann::ordered_json& json) {
 int layout_command(const Args& args) {
   std::set<std::string> values = mesh_input_options();
   values.merge(field_input_options());
-  values.insert({"--alpha", "--rho", "--h", "-o", "--ply", "--max-trace-steps",
+  values.insert({"--alpha", "--rho", "--h", "-o", "--ply", "--solver", "--max-trace-steps",
                  "--max-trace-seconds", "--max-solve-seconds"});
   const ParsedArgs parsed = parse_args(args, values, {"--json", "--help", "-h"}, "layout");
   if (parsed.has("--help") || parsed.has("-h")) {
@@ -100,6 +102,8 @@ int layout_command(const Args& args) {
   param_options.h_relative = parsed.number("--h", param_options.h_relative);
   if (!(param_options.h_relative > 0)) throw UsageError("--h expects a positive number");
   const layout::LayoutOptions options = layout_options(parsed);
+  const matching::SolverKind solver =
+      matching::solver_kind_from_name(parsed.value("--solver", "exact"));
 
   const LoadedMesh loaded = load_mesh_argument(parsed.positional[0], parsed);
   for (const std::string& warning : loaded.report.warnings)
@@ -118,7 +122,7 @@ int layout_command(const Args& args) {
   layout::LayoutGraph graph = layout::build_layout_graph(charts, options, progress);
   graph.seconds.insert(graph.seconds.begin(), {"field and param", param_seconds});
   const layout::QuadLayout result =
-      layout::solve_layout(charts, graph, alpha, options.limits, progress);
+      layout::solve_layout(charts, graph, alpha, solver, options.limits, progress);
 
   if (parsed.has("-o"))
     write_file_bytes(parsed.value("-o"), write_glb(layout::layout_scene(charts, graph, result)));

@@ -26,8 +26,8 @@ LayoutRun run_layout(Mesh mesh, double alpha = 5) {
   LayoutRun run{test::parameterized(std::move(mesh)), {}, {}};
   const layout::LayoutOptions options;
   run.graph = layout::build_layout_graph(run.input.charts(), options, Progress());
-  run.layout =
-      layout::solve_layout(run.input.charts(), run.graph, alpha, options.limits, Progress());
+  run.layout = layout::solve_layout(run.input.charts(), run.graph, alpha,
+                                    matching::SolverKind::exact, options.limits, Progress());
   return run;
 }
 

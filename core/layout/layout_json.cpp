@@ -31,11 +31,13 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   json["virtual_ports"] = g.virtual_ports.size();
   json["nodes"] = layout.check.nodes.size();
   json["arcs"] = layout.check.arcs.size();
+  json["solver"] = matching::to_string(layout.solver);
   json["matching_status"] = matching::to_string(layout.matching.status);
   json["lower_bound"] = finite_or_null(layout.matching.lower_bound);
   json["curved_edges"] = graph.curved_edges;
   json["length_limit"] = g.length_limit;
   json["length_doublings"] = graph.length_doublings;
+  json["unmatchable_ports"] = graph.unmatchable_ports;
   json["average_separatrix_length"] = average_separatrix_length(g);
   json["problems"] = layout.check.problems;
   return json;

@@ -7,7 +7,7 @@
 #include "layout/metrics.h"
 #include "layout/p1.h"
 #include "layout/patches.h"
-#include "matching/glpk_solver.h"
+#include "matching/blossom.h"
 #include "mesh/geometry.h"
 
 namespace tessera::layout {
@@ -44,8 +44,10 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
     growth.grow(length_limit, progress);
     result.graph = growth.graph();
     result.curved_edges = remove_edges_without_arc(charts, result.graph);
-    result.has_perfect_matching = has_perfect_matching(matching_problem(result.graph, 0));
-    if (result.has_perfect_matching || result.length_doublings == options.max_length_doublings)
+    const matching::MatchingProblem problem = matching_problem(result.graph, 0);
+    result.unmatchable_ports =
+        matching::deficient_ports(problem, std::vector<std::uint8_t>(problem.edges.size(), 1));
+    if (result.unmatchable_ports.empty() || result.length_doublings == options.max_length_doublings)
       break;
     length_limit *= 2;
     ++result.length_doublings;
@@ -57,15 +59,14 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
 }
 
 QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
-                        const Limits& limits, const Progress& progress) {
+                        matching::SolverKind solver, const Limits& limits,
+                        const Progress& progress) {
   QuadLayout layout;
   layout.alpha = alpha;
+  layout.solver = solver;
   StageClock clock(layout.seconds);
-  matching::GlpkConfig config;
-  config.clique_rows = true;
-  config.cuts = true;
-  layout.matching = matching::solve_with_glpk(matching_problem(graph.graph, alpha), config,
-                                              limits.max_solve_seconds, progress);
+  layout.matching = matching::solve_matching(matching_problem(graph.graph, alpha), solver,
+                                             limits.max_solve_seconds, progress);
   clock.stage_done("P1");
   for (std::uint32_t e : layout.matching.edges) {
     progress.step("arcs", double(layout.arcs.size()) / double(layout.matching.edges.size()));

@@ -4,7 +4,8 @@
 //     (Sec. 6.9, the diameter taken as the bounding-box diagonal), the edges whose hypotenuse is
 //     straight, and, if G has no perfect matching, growing on with L_max doubled (Sec. 5.1); then
 //     the conflicts I (Sec. 4.6);
-//  2. solve_layout(): program P1 with w = L_base + alpha L_height (Ch. 5) by GLPK (core/matching),
+//  2. solve_layout(): program P1 with w = L_base + alpha L_height (Ch. 5) by a solver of
+//     core/matching,
 //     the chosen edges traced as arcs, the mesh refined along them, patches, the validity check,
 //     the angle RSD.
 //
@@ -22,6 +23,7 @@
 #include "layout/port_graph.h"
 #include "layout/refine.h"
 #include "matching/result.h"
+#include "matching/solver.h"
 
 namespace tessera::layout {
 
@@ -41,12 +43,13 @@ struct LayoutGraph {
   PortGraph graph;
   std::size_t curved_edges = 0;  // candidates dropped: their hypotenuse is not straight
   int length_doublings = 0;      // of L_max, until G had a perfect matching
-  bool has_perfect_matching = false;
+  std::vector<std::uint32_t> unmatchable_ports;  // no matching of G covers them (empty: fine)
   std::vector<StageSeconds> seconds;
 };
 
 struct QuadLayout {
   double alpha = 0;
+  matching::SolverKind solver = matching::SolverKind::exact;
   matching::MatchingResult matching;
   std::vector<Arc> arcs;
   RefinedMesh refined;  // refined.mesh.face_attributes["patch"]
@@ -59,7 +62,8 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
                                const Progress& progress);
 
 QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
-                        const Limits& limits, const Progress& progress);
+                        matching::SolverKind solver, const Limits& limits,
+                        const Progress& progress);
 
 // The mean length of the separatrices as grown (Table 6.1).
 double average_separatrix_length(const PortGraph& graph);
