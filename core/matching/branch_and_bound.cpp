@@ -12,6 +12,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr double kIntegral = 1e-6;
+constexpr int kNodeCutRounds = 2;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 struct Fix {
@@ -35,11 +36,12 @@ struct LeastBound {
 
 class Search {
  public:
-  Search(const MatchingProblem& problem, LpRelaxation& lp, const std::vector<Fixed>& root,
-         const IncumbentSearch& heuristics, Incumbent start, Clock::time_point deadline,
-         const Progress& progress)
+  Search(const MatchingProblem& problem, LpRelaxation& lp, const Adjacency& exclusion,
+         const std::vector<Fixed>& root, const IncumbentSearch& heuristics, Incumbent start,
+         Clock::time_point deadline, const Progress& progress)
       : problem_(problem),
         lp_(lp),
+        exclusion_(exclusion),
         heuristics_(heuristics),
         best_(std::move(start)),
         deadline_(deadline),
@@ -160,7 +162,7 @@ class Search {
       ++nodes_;
       report();
       const double seconds = std::chrono::duration<double>(deadline_ - Clock::now()).count();
-      const LpStatus status = lp_.solve(cutoff(), seconds);
+      const LpStatus status = lp_.solve_with_cuts(exclusion_, cutoff(), seconds, kNodeCutRounds);
       if (status == LpStatus::time_limit) {
         stopped_bound = node.bound;
         return false;
@@ -183,6 +185,7 @@ class Search {
 
   const MatchingProblem& problem_;
   LpRelaxation& lp_;
+  const Adjacency& exclusion_;
   const IncumbentSearch& heuristics_;
   Incumbent best_;
   Clock::time_point deadline_;
@@ -201,10 +204,12 @@ double bound_tolerance(double incumbent) {
 }
 
 SearchResult branch_and_bound(const MatchingProblem& problem, LpRelaxation& lp,
-                              const std::vector<Fixed>& root, const IncumbentSearch& heuristics,
-                              Incumbent start, std::chrono::steady_clock::time_point deadline,
+                              const Adjacency& exclusion, const std::vector<Fixed>& root,
+                              const IncumbentSearch& heuristics, Incumbent start,
+                              std::chrono::steady_clock::time_point deadline,
                               const Progress& progress) {
-  return Search(problem, lp, root, heuristics, std::move(start), deadline, progress).run();
+  return Search(problem, lp, exclusion, root, heuristics, std::move(start), deadline, progress)
+      .run();
 }
 
 }  // namespace tessera::matching

@@ -28,11 +28,13 @@ struct SearchResult {
   std::uint64_t nodes = 0;
 };
 
-// `lp` holds the root relaxation with the preprocessing's fixings `root` applied; `start` is the
-// best matching known so far (or none).
+// `lp` holds the root relaxation with the preprocessing's fixings `root` applied; `exclusion` is
+// the exclusion graph whose violated cliques are separated at every node; `start` is the best
+// matching known so far (or none).
 SearchResult branch_and_bound(const MatchingProblem& problem, LpRelaxation& lp,
-                              const std::vector<Fixed>& root, const IncumbentSearch& heuristics,
-                              Incumbent start, std::chrono::steady_clock::time_point deadline,
+                              const Adjacency& exclusion, const std::vector<Fixed>& root,
+                              const IncumbentSearch& heuristics, Incumbent start,
+                              std::chrono::steady_clock::time_point deadline,
                               const Progress& progress);
 
 // Pruning tolerance: a node whose bound is within this of the incumbent cannot improve it.

@@ -9,12 +9,17 @@ namespace tessera::matching {
 
 namespace {
 
+std::vector<std::uint32_t> intersect(std::span<const std::uint32_t> a,
+                                     std::span<const std::uint32_t> b) {
+  std::vector<std::uint32_t> out;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+  return out;
+}
+
 class CliqueCover {
  public:
-  explicit CliqueCover(const MatchingProblem& problem)
-      : exclusion_(exclusive_edges(problem)),
-        conflicts_(conflicting_edges(problem)),
-        covered_(conflicts_.list.size(), 0) {}
+  CliqueCover(const Adjacency& exclusion, const Adjacency& pairs)
+      : exclusion_(exclusion), conflicts_(pairs), covered_(conflicts_.list.size(), 0) {}
 
   std::vector<Clique> run() {
     std::vector<Clique> cliques;
@@ -48,13 +53,6 @@ class CliqueCover {
     return links;
   }
 
-  static std::vector<std::uint32_t> intersect(std::span<const std::uint32_t> a,
-                                              std::span<const std::uint32_t> b) {
-    std::vector<std::uint32_t> out;
-    std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
-    return out;
-  }
-
   // Extends {a, b} by common neighbours, preferring those that cover the most new conflict pairs.
   Clique grow(std::uint32_t a, std::uint32_t b) const {
     Clique clique = {a, b};
@@ -85,15 +83,55 @@ class CliqueCover {
   }
 
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
-  Adjacency exclusion_;
-  Adjacency conflicts_;
+  const Adjacency& exclusion_;
+  const Adjacency& conflicts_;
   std::vector<std::uint8_t> covered_;  // per entry of conflicts_.list
 };
 
+// Grows a clique from `seed` by the candidate of largest x, then makes it maximal.
+Clique heaviest_clique_from(std::uint32_t seed, const Adjacency& exclusion,
+                            const std::vector<double>& x) {
+  Clique clique = {seed};
+  auto of = exclusion.of(seed);
+  std::vector<std::uint32_t> candidates(of.begin(), of.end());
+  while (!candidates.empty()) {
+    const auto best = std::max_element(
+        candidates.begin(), candidates.end(),
+        [&](std::uint32_t a, std::uint32_t b) { return x[a] < x[b] || (x[a] == x[b] && a > b); });
+    const std::uint32_t chosen = *best;
+    clique.push_back(chosen);
+    candidates = intersect(candidates, exclusion.of(chosen));
+  }
+  std::sort(clique.begin(), clique.end());
+  return clique;
+}
+
 }  // namespace
 
+std::vector<Clique> clique_cover(const Adjacency& exclusion, const Adjacency& pairs) {
+  return CliqueCover(exclusion, pairs).run();
+}
+
 std::vector<Clique> conflict_cliques(const MatchingProblem& problem) {
-  return CliqueCover(problem).run();
+  return clique_cover(exclusive_edges(problem), conflicting_edges(problem));
+}
+
+std::vector<Clique> violated_cliques(const Adjacency& exclusion, const std::vector<double>& x,
+                                     double tolerance) {
+  std::vector<std::uint32_t> seeds;
+  for (std::uint32_t e = 0; e < x.size(); ++e)
+    if (x[e] > tolerance && x[e] < 1.0 - tolerance) seeds.push_back(e);
+  std::stable_sort(seeds.begin(), seeds.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return x[a] > x[b]; });
+  std::vector<Clique> found;
+  for (std::uint32_t seed : seeds) {
+    Clique clique = heaviest_clique_from(seed, exclusion, x);
+    double weight = 0.0;
+    for (std::uint32_t e : clique) weight += x[e];
+    if (weight > 1.0 + tolerance && std::find(found.begin(), found.end(), clique) == found.end())
+      found.push_back(std::move(clique));
+  }
+  return found;
 }
 
 }  // namespace tessera::matching

@@ -9,14 +9,23 @@
 #include <cstdint>
 #include <vector>
 
+#include "matching/adjacency.h"
 #include "matching/problem.h"
 
 namespace tessera::matching {
 
 using Clique = std::vector<std::uint32_t>;  // edge indices, increasing
 
-// Maximal cliques of the exclusion graph, found greedily, that together hold every conflict pair
-// (each clique holds at least one). Deterministic.
+// Maximal cliques of the graph `exclusion`, found greedily, that together hold every pair of the
+// graph `pairs` (a subgraph of it; each clique holds at least one of its pairs). Deterministic.
+std::vector<Clique> clique_cover(const Adjacency& exclusion, const Adjacency& pairs);
+
+// clique_cover() of the conflict pairs in the exclusion graph of the problem (adjacency.h).
 std::vector<Clique> conflict_cliques(const MatchingProblem& problem);
+
+// Separation: maximal cliques of `exclusion` with sum_{e in C} x_e > 1 + tolerance, grown greedily
+// (largest x first) from each fractional edge; no clique twice.
+std::vector<Clique> violated_cliques(const Adjacency& exclusion, const std::vector<double>& x,
+                                     double tolerance);
 
 }  // namespace tessera::matching

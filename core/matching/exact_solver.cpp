@@ -21,7 +21,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr int kOddSetRounds = 20;
+constexpr int kRootCutRounds = 30;
 constexpr int kRepairRounds = 6;
 
 MatchingResult infeasible(std::vector<std::uint32_t> unmatchable = {}) {
@@ -40,6 +40,15 @@ MatchingResult optimal(const MatchingProblem& problem, std::vector<std::uint32_t
   return r;
 }
 
+// `graph` with the pairs added.
+Adjacency with_pairs(const Adjacency& graph,
+                     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& extra) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = extra;
+  for (std::uint32_t i = 0; i < graph.size(); ++i)
+    for (std::uint32_t j : graph.of(i)) pairs.emplace_back(i, j);
+  return adjacency_from_pairs(graph.size(), pairs);
+}
+
 bool conflict_free(const Adjacency& conflicts, const std::vector<std::uint32_t>& edges,
                    std::size_t edge_count) {
   std::vector<std::uint8_t> chosen(edge_count, 0);
@@ -50,13 +59,16 @@ bool conflict_free(const Adjacency& conflicts, const std::vector<std::uint32_t>&
   return true;
 }
 
-// Per edge, the sum of the multipliers of the cliques that hold it.
-std::vector<double> edge_prices(std::size_t edge_count, const std::vector<Clique>& cliques,
-                                const std::vector<double>& clique_prices) {
-  std::vector<double> prices(edge_count, 0.0);
-  for (std::size_t k = 0; k < cliques.size(); ++k)
-    for (std::uint32_t e : cliques[k]) prices[e] += clique_prices[k];
-  return prices;
+// Edges by decreasing LP value, then increasing reduced cost: the order the dive tries them in.
+std::vector<std::uint32_t> order_by_relaxation(const LpRelaxation& lp) {
+  std::vector<std::uint32_t> order(lp.values().size());
+  for (std::uint32_t e = 0; e < order.size(); ++e) order[e] = e;
+  const std::vector<double>& x = lp.values();
+  const std::vector<double>& d = lp.reduced_costs();
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return x[a] != x[b] ? x[a] > x[b] : d[a] < d[b];
+  });
+  return order;
 }
 
 MatchingResult from_search(const SearchResult& search, double root_bound) {
@@ -97,7 +109,8 @@ MatchingResult solve_component(const MatchingProblem& problem, Clock::time_point
   std::vector<std::uint32_t> unmatchable = deficient_ports(problem, all);
   if (!unmatchable.empty()) return infeasible(std::move(unmatchable));
   const Adjacency conflicts = conflicting_edges(problem);
-  const Probing probing = probe(problem, incident, exclusive_edges(problem));
+  const Adjacency exclusive = exclusive_edges(problem);
+  const Probing probing = probe(problem, incident, exclusive);
   if (probing.infeasible) return infeasible();
   std::vector<std::uint8_t> allowed(problem.edges.size(), 1);
   for (std::size_t e = 0; e < allowed.size(); ++e) allowed[e] = probing.edges[e] != Fixed::zero;
@@ -110,8 +123,9 @@ MatchingResult solve_component(const MatchingProblem& problem, Clock::time_point
     return optimal(problem, unconstrained.edges);
   const double cover_bound = objective_of(problem, unconstrained.edges);
 
-  const std::vector<Clique> cliques = conflict_cliques(problem);
-  LpRelaxation lp(problem, incident, cliques);
+  // The exclusion graph with the implied exclusions of probing: larger cliques, stronger rows.
+  const Adjacency exclusion = with_pairs(exclusive, probing.implied);
+  LpRelaxation lp(problem, incident, clique_cover(exclusion, conflicts));
   for (std::uint32_t e = 0; e < problem.edges.size(); ++e)
     if (probing.edges[e] != Fixed::free) {
       const int value = probing.edges[e] == Fixed::one ? 1 : 0;
@@ -120,19 +134,17 @@ MatchingResult solve_component(const MatchingProblem& problem, Clock::time_point
   const auto seconds_left = [&] {
     return std::chrono::duration<double>(deadline - Clock::now()).count();
   };
-  LpStatus status = lp.solve(kInfinity, seconds_left());
-  for (int round = 0; status == LpStatus::optimal && round < kOddSetRounds; ++round) {
-    if (lp.add_violated_odd_sets() == 0) break;
-    status = lp.solve(kInfinity, seconds_left());
-  }
+  const LpStatus status = lp.solve_with_cuts(exclusion, kInfinity, seconds_left(), kRootCutRounds);
   if (status == LpStatus::infeasible) return infeasible();
   if (status == LpStatus::time_limit) return stopped_at_root(cover_bound);
   const double root_bound = std::max(cover_bound, lp.objective());
 
-  const IncumbentSearch heuristics(problem, incident, conflicts, probing.edges);
-  Incumbent start = heuristics.lagrangian_repair(
-      edge_prices(problem.edges.size(), cliques, lp.clique_prices()), kRepairRounds);
-  const SearchResult search = branch_and_bound(problem, lp, probing.edges, heuristics,
+  const IncumbentSearch heuristics(problem, incident, conflicts, exclusion, probing.edges);
+  Incumbent start = heuristics.dive(order_by_relaxation(lp));
+  Incumbent repaired = heuristics.lagrangian_repair(lp.edge_prices(), kRepairRounds);
+  if (repaired.found && (!start.found || repaired.objective < start.objective))
+    start = std::move(repaired);
+  const SearchResult search = branch_and_bound(problem, lp, exclusion, probing.edges, heuristics,
                                                std::move(start), deadline, progress);
   return from_search(search, root_bound);
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "matching/blossom.h"
+#include "matching/check.h"
 
 namespace tessera::matching {
 
@@ -11,6 +12,7 @@ namespace {
 
 constexpr int kRepairSteps = 8;
 constexpr int kImprovePasses = 100;
+constexpr int kDiveBacktracks = 1000;
 
 std::vector<std::uint8_t> mask_of(const std::vector<std::uint32_t>& edges, std::size_t m) {
   std::vector<std::uint8_t> mask(m, 0);
@@ -27,13 +29,72 @@ double improvement_tolerance(const MatchingProblem& problem) {
 }  // namespace
 
 IncumbentSearch::IncumbentSearch(const MatchingProblem& problem, const Adjacency& incident,
-                                 const Adjacency& conflicts, const std::vector<Fixed>& fixed)
+                                 const Adjacency& conflicts, const Adjacency& exclusive,
+                                 const std::vector<Fixed>& fixed)
     : problem_(problem),
       incident_(incident),
       conflicts_(conflicts),
+      exclusive_(exclusive),
+      fixed_(fixed),
       allowed_(problem.edges.size(), 1) {
   for (std::size_t e = 0; e < fixed.size(); ++e)
     if (fixed[e] == Fixed::zero) allowed_[e] = 0;
+}
+
+// Whether the edges not fixed to 0 still hold a matching that covers every port.
+bool IncumbentSearch::covers_every_port(const std::vector<Fixed>& values) const {
+  std::vector<std::uint8_t> usable(values.size());
+  for (std::size_t e = 0; e < values.size(); ++e) usable[e] = values[e] != Fixed::zero;
+  return deficient_ports(problem_, usable).empty();
+}
+
+Incumbent IncumbentSearch::dive(const std::vector<std::uint32_t>& order) const {
+  struct Decision {
+    std::size_t position;  // in `order`, of the edge set to 1
+    Propagation::State before;
+  };
+  Propagation propagation(problem_, incident_, exclusive_, fixed_);
+  std::vector<Decision> decisions;
+  int backtracks = 0;
+  std::size_t position = 0;
+  for (;;) {
+    if (propagation.infeasible()) {
+      // Both values of some edge fail: undo the last decision and take its other value.
+      if (decisions.empty() || backtracks++ == kDiveBacktracks) return {};
+      const Decision last = std::move(decisions.back());
+      decisions.pop_back();
+      propagation.restore(last.before);
+      propagation.fix_zero(order[last.position]);
+      position = last.position + 1;
+      continue;
+    }
+    while (position < order.size() && propagation.values()[order[position]] != Fixed::free)
+      ++position;
+    if (position == order.size()) break;
+    const std::uint32_t e = order[position];
+    if (propagation.try_one(e)) {
+      Propagation::State before = propagation.save();
+      propagation.commit();
+      if (covers_every_port(propagation.values())) {
+        decisions.push_back({position, std::move(before)});
+      } else {  // conflict-free so far, but the rest cannot cover the ports any more
+        propagation.restore(before);
+        propagation.fix_zero(e);
+      }
+    } else {
+      propagation.fix_zero(e);
+    }
+    ++position;
+  }
+  Incumbent found;
+  for (std::uint32_t e = 0; e < problem_.edges.size(); ++e)
+    if (propagation.values()[e] == Fixed::one) found.edges.push_back(e);
+  const SolutionCheck check = check_solution(problem_, found.edges);
+  if (!check.feasible) return {};
+  found.found = true;
+  found.objective = check.objective;
+  improve(found);
+  return found;
 }
 
 bool IncumbentSearch::conflict_free_with(std::uint32_t e,

@@ -7,6 +7,11 @@
 // covered again with edges compatible with the rest; when that fails, the edges in conflict are
 // priced up and the whole matching is recomputed.
 //
+// Diving: edges are visited in a given order (e.g. by decreasing LP value); each is set to 1 if
+// propagation (propagation.h) allows it, else to 0. When setting 0 fails too, the last edge set
+// to 1 is set to 0 instead (depth-first backtracking, a bounded number of times). Cheap: no LP
+// is solved.
+//
 // Local search: exchanges that keep the matching feasible and make it cheaper, to a local optimum:
 // two matched edges a-b, c-d replaced by a-c, b-d or a-d, b-c, and one matched edge replaced by
 // a cheaper parallel edge or, at a virtual port, by an edge to an unmatched virtual port.
@@ -16,8 +21,8 @@
 #include <vector>
 
 #include "matching/adjacency.h"
-#include "matching/probing.h"
 #include "matching/problem.h"
+#include "matching/propagation.h"
 
 namespace tessera::matching {
 
@@ -29,9 +34,13 @@ struct Incumbent {
 
 class IncumbentSearch {
  public:
-  // The adjacency lists are those of `problem` (adjacency.h). Edges fixed to 0 are never used.
+  // The adjacency lists are those of `problem` (adjacency.h; `exclusive` may hold implied
+  // exclusions too). Edges fixed to 0 are never used, edges fixed to 1 always in a dive.
   IncumbentSearch(const MatchingProblem& problem, const Adjacency& incident,
-                  const Adjacency& conflicts, const std::vector<Fixed>& fixed);
+                  const Adjacency& conflicts, const Adjacency& exclusive,
+                  const std::vector<Fixed>& fixed);
+
+  Incumbent dive(const std::vector<std::uint32_t>& order) const;
 
   // `prices[e]` is added to w_e in the first round (the clique multipliers summed over e's
   // cliques).
@@ -41,6 +50,7 @@ class IncumbentSearch {
   void improve(Incumbent& incumbent) const;
 
  private:
+  bool covers_every_port(const std::vector<Fixed>& values) const;
   bool conflict_free_with(std::uint32_t e, const std::vector<std::uint8_t>& chosen) const;
   std::vector<std::uint32_t> conflicting_members(const std::vector<std::uint32_t>& edges) const;
   bool fill(std::vector<std::uint32_t>& kept, const std::vector<double>& weights) const;
@@ -54,6 +64,8 @@ class IncumbentSearch {
   const MatchingProblem& problem_;
   const Adjacency& incident_;
   const Adjacency& conflicts_;
+  const Adjacency& exclusive_;
+  std::vector<Fixed> fixed_;
   std::vector<std::uint8_t> allowed_;
 };
 

@@ -3,6 +3,7 @@
 #include <glpk.h>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
 #include "base/error.h"
@@ -11,7 +12,8 @@ namespace tessera::matching {
 
 namespace {
 
-constexpr double kFractional = 1e-6;  // x in (eps, 1 - eps) is fractional
+constexpr double kFractional = 1e-6;    // x in (eps, 1 - eps) is fractional
+constexpr double kCutTolerance = 1e-6;  // a row violated by less is not added
 
 void add_row(glp_prob* lp, const std::vector<int>& columns, int type, double bound) {
   const int row = glp_add_rows(lp, 1);
@@ -56,9 +58,7 @@ LpRelaxation::LpRelaxation(const MatchingProblem& problem, const Adjacency& inci
   }
   for (std::uint32_t v = 0; v < problem.node_count(); ++v)  // (5.2)
     add_row(lp, columns_of(incident.of(v)), problem.is_virtual[v] ? GLP_UP : GLP_FX, 1.0);
-  clique_rows_begin_ = glp_get_num_rows(lp) + 1;
-  for (const Clique& clique : cliques) add_row(lp, columns_of(clique), GLP_UP, 1.0);  // (5.3)
-  clique_rows_end_ = glp_get_num_rows(lp) + 1;
+  add_cliques(cliques);  // (5.3)
   glp_std_basis(lp);
 }
 
@@ -92,6 +92,22 @@ LpStatus LpRelaxation::solve(double cutoff, double seconds) {
   return objective_ > cutoff ? LpStatus::cutoff : LpStatus::optimal;
 }
 
+LpStatus LpRelaxation::solve_with_cuts(const Adjacency& exclusion, double cutoff, double seconds,
+                                       int rounds) {
+  const auto start = std::chrono::steady_clock::now();
+  LpStatus status = solve(cutoff, seconds);
+  for (int round = 0; status == LpStatus::optimal && round < rounds; ++round) {
+    const std::size_t odd_sets = add_violated_odd_sets();
+    const std::vector<Clique> cliques = violated_cliques(exclusion, values_, kCutTolerance);
+    if (odd_sets == 0 && cliques.empty()) break;
+    add_cliques(cliques);
+    const double spent =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    status = solve(cutoff, seconds - spent);
+  }
+  return status;
+}
+
 void LpRelaxation::read_solution() {
   glp_prob* lp = lp_.get();
   const std::size_t m = problem_.edges.size();
@@ -104,10 +120,19 @@ void LpRelaxation::read_solution() {
   objective_ = glp_get_obj_val(lp);
 }
 
-std::vector<double> LpRelaxation::clique_prices() const {
-  std::vector<double> prices;
-  for (int row = clique_rows_begin_; row < clique_rows_end_; ++row)
-    prices.push_back(std::max(0.0, -glp_get_row_dual(lp_.get(), row)));
+void LpRelaxation::add_cliques(const std::vector<Clique>& cliques) {
+  for (const Clique& clique : cliques) {
+    add_row(lp_.get(), columns_of(clique), GLP_UP, 1.0);
+    clique_rows_.emplace_back(glp_get_num_rows(lp_.get()), clique);
+  }
+}
+
+std::vector<double> LpRelaxation::edge_prices() const {
+  std::vector<double> prices(problem_.edges.size(), 0.0);
+  for (const auto& [row, clique] : clique_rows_) {
+    const double price = std::max(0.0, -glp_get_row_dual(lp_.get(), row));
+    for (std::uint32_t e : clique) prices[e] += price;
+  }
   return prices;
 }
 

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "matching/adjacency.h"
@@ -40,8 +41,16 @@ class LpRelaxation {
   double objective() const { return objective_; }
   const std::vector<double>& values() const { return values_; }          // x per edge
   const std::vector<double>& reduced_costs() const { return reduced_; }  // per edge
-  // -dual of each clique row (>= 0): the Lagrangian multipliers of the cliques at this optimum.
-  std::vector<double> clique_prices() const;
+  // Per edge, the sum over the clique rows holding it of -dual (>= 0): the Lagrangian multipliers
+  // of the cliques at this optimum, priced into the edge.
+  std::vector<double> edge_prices() const;
+
+  // Adds rows sum_{e in C} x_e <= 1 (cliques of the exclusion graph, e.g. separated ones).
+  void add_cliques(const std::vector<Clique>& cliques);
+
+  // solve(), then up to `rounds` times: add the violated clique rows of `exclusion` (cliques.h)
+  // and odd-set rows, and solve again; stops early when none is violated.
+  LpStatus solve_with_cuts(const Adjacency& exclusion, double cutoff, double seconds, int rounds);
 
   // Odd sets S of ports (no virtual port) spanned by a component of the fractional edges whose
   // row x(E(S)) <= (|S| - 1) / 2 the current solution violates; adds their rows. Returns how many.
@@ -58,7 +67,7 @@ class LpRelaxation {
   };
   const MatchingProblem& problem_;
   std::unique_ptr<glp_prob, Deleter> lp_;
-  int clique_rows_begin_ = 0, clique_rows_end_ = 0;  // 1-based row range of the cliques
+  std::vector<std::pair<int, Clique>> clique_rows_;  // GLPK row (1-based) and its clique
   double objective_ = 0.0;
   std::vector<double> values_, reduced_;
 };

@@ -1,28 +1,28 @@
-// Probing (the exact solver's preprocessing): edges that cannot be in any feasible matching are
-// fixed to 0, edges that must be are fixed to 1, by propagation to a fixpoint:
-//  - a port with no usable edge left: P1 is infeasible;
-//  - a port with one usable edge left: that edge is fixed to 1, and every edge exclusive with it
-//    (sharing a node, or in a conflict pair with it) to 0;
-//  - an edge whose choice would leave some other port without any usable edge is fixed to 0.
+// Probing (the exact solver's preprocessing). Every free edge e is tried at x_e = 1 and the
+// consequences are propagated (propagation.h). If that ends in a contradiction, e is fixed to 0.
+// Otherwise every edge f it drove to 0 gives an implied exclusion x_e + x_f <= 1 that no conflict
+// pair states: those strengthen the clique rows of the relaxation (lp_relaxation.h). A port with
+// one usable edge fixes it to 1. Repeated until nothing changes.
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "matching/adjacency.h"
 #include "matching/problem.h"
+#include "matching/propagation.h"
 
 namespace tessera::matching {
-
-enum class Fixed : std::int8_t { free = -1, zero = 0, one = 1 };
 
 struct Probing {
   std::vector<Fixed> edges;  // per edge
   bool infeasible = false;
-  std::uint32_t blocked_port = 0;  // when infeasible: a port that cannot be matched
+  // Pairs of free edges (both orders) that cannot both be 1, beyond the exclusive ones.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> implied;
 };
 
-// `exclusive` is exclusive_edges(problem), `incident` is incident_edges(problem).
+// `incident` is incident_edges(problem), `exclusive` is exclusive_edges(problem).
 Probing probe(const MatchingProblem& problem, const Adjacency& incident,
               const Adjacency& exclusive);
 

@@ -26,7 +26,8 @@ MatchingResult solve_glpk_tuned(const MatchingProblem& problem, double time_limi
   const Adjacency incident = incident_edges(problem);
   const Adjacency conflicts = conflicting_edges(problem);
   const std::vector<Fixed> none(problem.edges.size(), Fixed::free);
-  const IncumbentSearch heuristics(problem, incident, conflicts, none);
+  const Adjacency exclusive = exclusive_edges(problem);
+  const IncumbentSearch heuristics(problem, incident, conflicts, exclusive, none);
   const Incumbent incumbent =
       heuristics.lagrangian_repair(std::vector<double>(problem.edges.size(), 0.0), kRepairRounds);
   if (incumbent.found) config.incumbent = incumbent.edges;
