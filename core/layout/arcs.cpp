@@ -1,5 +1,6 @@
 #include "layout/arcs.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "layout/trace.h"
@@ -14,29 +15,41 @@ struct ArcStart {
   Index target = kNoIndex;  // the far singularity's vertex; kNoIndex: the arc ends at the boundary
 };
 
+Index vertex_of_port(const PortGraph& graph, Index port) {
+  return graph.ports.points[graph.ports.ports[port].singular_point].ring.vertex;
+}
+
+// The arc leaves the base port's singularity, or the far port's when `from_far_end`: the
+// hypotenuse makes the same turn atan(height / base) with either port (LAYOUT_NOTES: s_i - s_j
+// = L_base d_far - side L_height J d_far with d_far the far port's direction).
 std::optional<ArcStart> arc_start(const Charts& charts, const PortGraph& graph,
-                                  const GraphEdge& edge) {
-  const Port& port = graph.ports.ports[edge.base_line];
-  if (port.corner == kNoIndex) return std::nullopt;
+                                  const GraphEdge& edge, bool from_far_end) {
+  const Port& port = graph.ports.ports[from_far_end ? edge.v : edge.u];
   const SingularPoint& point = graph.ports.points[port.singular_point];
   ArcStart start;
   start.length = std::hypot(edge.base, edge.height);
-  if (edge.kind == EdgeKind::boundary) {
+  if (edge.kind != EdgeKind::boundary)
+    start.target = vertex_of_port(graph, from_far_end ? edge.u : edge.v);
+  if (edge.height == 0) {
     start.cursor = cursor_at_corner(charts, port.corner, port.direction);
-  } else {
-    const Index far = graph.ports.ports[edge.v].singular_point;
-    start.target = graph.ports.points[far].ring.vertex;
-    if (edge.height == 0) {
-      start.cursor = cursor_at_corner(charts, port.corner, port.direction);
-    } else {
-      // The hypotenuse turns from the port by atan(height / base), away from the height's side.
-      const double angle = port.angle + std::atan2(-edge.side * edge.height, edge.base);
-      const std::size_t k = corner_at_angle(charts, point.ring, angle);
-      if (k == point.ring.corners.size()) return std::nullopt;
-      start.cursor = cursor_at_corner(charts, point.ring.corners[k].corner,
-                                      direction_in_corner(charts, point.ring, k, angle));
-    }
+    return start;
   }
+  // In the port's own corner if the turned direction stays there (a flipped chart turns the
+  // other way), else in the corner of its unfolded angle.
+  const double turn = std::atan2(-edge.side * edge.height, edge.base);
+  const bool flipped = charts.signed_area(charts.connectivity.face[port.corner]) < 0;
+  const double chart_turn = flipped ? -turn : turn;
+  const Eigen::Vector2d d =
+      std::cos(chart_turn) * port.direction + std::sin(chart_turn) * perp(port.direction);
+  if (corner_contains(charts, port.corner, d)) {
+    start.cursor = cursor_at_corner(charts, port.corner, d);
+    return start;
+  }
+  const double angle = port.angle + turn;
+  const std::size_t k = corner_at_angle(charts, point.ring, angle);
+  if (k == point.ring.corners.size()) return std::nullopt;
+  start.cursor = cursor_at_corner(charts, point.ring.corners[k].corner,
+                                  direction_in_corner(charts, point.ring, k, angle));
   return start;
 }
 
@@ -72,23 +85,15 @@ bool passes_singularity(const Charts& charts, const PortGraph& graph, const Line
   return false;
 }
 
-void add_piece(Arc& arc, Index face, const SurfacePoint& from, const SurfacePoint& to,
-               const Eigen::Vector2d& from_uv, const Eigen::Vector2d& to_uv) {
-  if (from == to) return;  // a turn around a vertex the line passes through
-  arc.pieces.push_back({face, from, to, from_uv, to_uv});
-}
-
-}  // namespace
-
-std::optional<Arc> trace_arc(const Charts& charts, const PortGraph& graph, Index edge_index) {
-  const GraphEdge& edge = graph.edges[edge_index];
-  std::optional<ArcStart> found = arc_start(charts, graph, edge);
-  if (!found) return std::nullopt;
-  ArcStart& start = *found;
+// The straight line from the start to its target (or to the boundary), as pieces per face.
+std::optional<std::vector<ArcPiece>> trace_straight(const Charts& charts, const PortGraph& graph,
+                                                    ArcStart start) {
   LineCursor& cursor = start.cursor;
-  Arc arc;
-  arc.edge = edge_index;
-  arc.length = start.length;
+  std::vector<ArcPiece> pieces;
+  const auto add = [&pieces](Index face, const SurfacePoint& from, const SurfacePoint& to,
+                             const Eigen::Vector2d& from_uv, const Eigen::Vector2d& to_uv) {
+    if (!(from == to)) pieces.push_back({face, from, to, from_uv, to_uv});
+  };
   const Index origin = charts.vertex(cursor.entry);
   SurfacePoint from{origin, kNoIndex, 0};
   // Lengths within this of the end coincide with it (accumulated rounding along the arc).
@@ -98,41 +103,70 @@ std::optional<Arc> trace_arc(const Charts& charts, const PortGraph& graph, Index
       const Index corner = corner_of(charts, cursor.face, start.target);
       const Eigen::Vector2d end = cursor.point + (start.length - cursor.length) * cursor.direction;
       if (corner != kNoIndex && (charts.uv(corner) - end).norm() <= slack) {
-        add_piece(arc, cursor.face, from, {start.target, kNoIndex, 0}, cursor.point,
-                  charts.uv(corner));
-        return arc;
+        add(cursor.face, from, {start.target, kNoIndex, 0}, cursor.point, charts.uv(corner));
+        return pieces;
       }
     }
     const LineStep step = line_step(charts, cursor);
     if (!step.valid || passes_singularity(charts, graph, cursor, step, origin, start.target)) break;
     const SurfacePoint to = exit_point(charts, step);
-    add_piece(arc, cursor.face, from, to, cursor.point, step.point);
-    if (start.target != kNoIndex && step.vertex == start.target) return arc;
+    add(cursor.face, from, to, cursor.point, step.point);
+    if (start.target != kNoIndex && step.vertex == start.target) return pieces;
     from = to;
     if (!cross_edge(charts, step, cursor)) {
-      if (start.target == kNoIndex) return arc;
+      if (start.target == kNoIndex) return pieces;
       break;
     }
   }
   return std::nullopt;
 }
 
-std::size_t remove_edges_without_arc(const Charts& charts, PortGraph& graph) {
+std::vector<ArcPiece> reversed(std::vector<ArcPiece> pieces) {
+  std::reverse(pieces.begin(), pieces.end());
+  for (ArcPiece& piece : pieces) {
+    std::swap(piece.from, piece.to);
+    std::swap(piece.from_uv, piece.to_uv);
+  }
+  return pieces;
+}
+
+}  // namespace
+
+// From the base port; where that fails (a folded singular ring at the start), from the far port.
+std::optional<Arc> trace_arc(const Charts& charts, const PortGraph& graph, Index edge_index) {
+  const GraphEdge& edge = graph.edges[edge_index];
+  std::optional<std::vector<ArcPiece>> pieces;
+  if (std::optional<ArcStart> start = arc_start(charts, graph, edge, false))
+    pieces = trace_straight(charts, graph, *start);
+  if (!pieces && edge.kind != EdgeKind::boundary) {
+    if (std::optional<ArcStart> start = arc_start(charts, graph, edge, true)) {
+      if (std::optional<std::vector<ArcPiece>> back = trace_straight(charts, graph, *start))
+        pieces = reversed(std::move(*back));
+    }
+  }
+  if (!pieces) return std::nullopt;
+  return Arc{edge_index, std::move(*pieces), std::hypot(edge.base, edge.height)};
+}
+
+std::vector<Arc> keep_edges_with_arcs(const Charts& charts, PortGraph& graph) {
   std::vector<Index> renumbered(graph.edges.size(), kNoIndex);
   std::vector<GraphEdge> kept;
+  std::vector<Arc> arcs;
   for (Index e = 0; e < graph.edges.size(); ++e) {
-    if (!trace_arc(charts, graph, e)) continue;
+    std::optional<Arc> arc = trace_arc(charts, graph, e);
+    if (!arc) continue;
     renumbered[e] = static_cast<Index>(kept.size());
+    arc->edge = renumbered[e];
+    arcs.push_back(std::move(*arc));
     kept.push_back(graph.edges[e]);
   }
-  const std::size_t removed = graph.edges.size() - kept.size();
   graph.edges = std::move(kept);
   std::vector<EdgePair> pairs;
   for (const EdgePair& pair : graph.zero_area)
     if (renumbered[pair.first] != kNoIndex && renumbered[pair.second] != kNoIndex)
       pairs.push_back({renumbered[pair.first], renumbered[pair.second]});
   graph.zero_area = std::move(pairs);
-  return removed;
+  return arcs;
 }
 
 Eigen::Vector3d position_of(const Mesh& mesh, const Connectivity& connectivity,

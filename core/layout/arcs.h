@@ -47,8 +47,9 @@ struct Arc {
 std::optional<Arc> trace_arc(const Charts& charts, const PortGraph& graph, Index edge);
 
 // Removes the edges whose arc is not straight (trace_arc() finds none), renumbering the rest and
-// the zero-area pairs; returns how many were removed. Run before the conflicts are built.
-std::size_t remove_edges_without_arc(const Charts& charts, PortGraph& graph);
+// the zero-area pairs; returns the arcs of the edges kept, in edge order. Run before the conflicts
+// are built.
+std::vector<Arc> keep_edges_with_arcs(const Charts& charts, PortGraph& graph);
 
 // The 3D position of a surface point.
 Eigen::Vector3d position_of(const Mesh& mesh, const Connectivity& connectivity,

@@ -85,7 +85,65 @@ std::vector<Hypotenuse> lay_out_line(const PortGraph& graph, const std::vector<E
   return result;
 }
 
+// The arc's base direction in the chart of a piece: the piece's direction turned back by the
+// hypotenuse's angle with the base (arcs run from the base port's singularity).
+bool base_along_u(const GraphEdge& edge, const ArcPiece& piece) {
+  const Eigen::Vector2d hyp = piece.to_uv - piece.from_uv;
+  const double turn = std::atan2(edge.side * edge.height, edge.base);
+  const Eigen::Vector2d base = std::cos(turn) * hyp + std::sin(turn) * perp(hyp);
+  return std::abs(base.x()) > std::abs(base.y());
+}
+
+// Two pieces in one chart meet: their segments intersect, touching included (a crossing on a mesh
+// edge is an endpoint of the pieces on both sides).
+bool pieces_meet(const ArcPiece& p, const ArcPiece& q, double tolerance) {
+  const Eigen::Vector2d dp = p.to_uv - p.from_uv, dq = q.to_uv - q.from_uv;
+  const auto side = [tolerance](double s) { return s > tolerance ? 1 : s < -tolerance ? -1 : 0; };
+  const int a = side(cross(dp, q.from_uv - p.from_uv)), b = side(cross(dp, q.to_uv - p.from_uv));
+  const int c = side(cross(dq, p.from_uv - q.from_uv)), d = side(cross(dq, p.to_uv - q.from_uv));
+  if (a * b > 0 || c * d > 0) return false;
+  return !(a == 0 && b == 0);  // collinear pieces do not cross
+}
+
+bool at_singular_vertex(const PortGraph& graph, const SurfacePoint& a, const SurfacePoint& b) {
+  return a.vertex != kNoIndex && a == b && graph.ports.point_of_vertex[a.vertex] != kNoIndex;
+}
+
 }  // namespace
+
+std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGraph& graph,
+                                            const std::vector<Arc>& arcs,
+                                            const Progress& progress) {
+  std::vector<std::vector<std::pair<Index, Index>>> in_face(charts.mesh.face_count());
+  for (Index a = 0; a < arcs.size(); ++a)
+    for (Index k = 0; k < arcs[a].pieces.size(); ++k)
+      in_face[arcs[a].pieces[k].face].push_back({a, k});
+  std::vector<EdgePair> pairs;
+  for (Index f = 0; f < in_face.size(); ++f) {
+    if (f % 4096 == 0) progress.step("arc crossings", double(f) / double(in_face.size()));
+    const auto& here = in_face[f];
+    const double tolerance = charts.tolerance(f);
+    for (std::size_t i = 0; i < here.size(); ++i) {
+      for (std::size_t j = i + 1; j < here.size(); ++j) {
+        const Arc &p = arcs[here[i].first], &q = arcs[here[j].first];
+        if (p.edge == q.edge) continue;
+        const GraphEdge &e = graph.edges[p.edge], &g = graph.edges[q.edge];
+        if (share_node(e, g)) continue;
+        const ArcPiece &a = p.pieces[here[i].second], &b = q.pieces[here[j].second];
+        if (base_along_u(e, a) != base_along_u(g, b)) continue;
+        if (!pieces_meet(a, b, tolerance)) continue;
+        // Arcs leaving one singularity meet there, which is no crossing.
+        if (at_singular_vertex(graph, a.from, b.from) || at_singular_vertex(graph, a.from, b.to) ||
+            at_singular_vertex(graph, a.to, b.from) || at_singular_vertex(graph, a.to, b.to))
+          continue;
+        pairs.push_back({std::min(p.edge, q.edge), std::max(p.edge, q.edge)});
+      }
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
 
 std::vector<EdgePair> illegal_crossings(const PortGraph& graph, const Progress& progress) {
   const std::vector<std::vector<EdgeOnLine>> by_line = edges_by_line(graph);

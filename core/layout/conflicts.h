@@ -17,10 +17,21 @@
 #include <vector>
 
 #include "base/progress.h"
-#include "layout/port_graph.h"
+#include "layout/arcs.h"
 
 namespace tessera::layout {
 
 std::vector<EdgePair> illegal_crossings(const PortGraph& graph, const Progress& progress);
+
+// The same relation read off the surface: the arcs of all edges (keep_edges_with_arcs()) are
+// intersected face by face, and two crossing arcs are an illegal pair when their bases, turned
+// into the crossing face's chart, are parallel (bases are isolines: axis-parallel in every chart).
+// This finds the crossings that no frame of Algorithm 1 holds, where the separatrices through the
+// crossing stopped before it (at L_max, by the spiral test or at a singularity).
+//
+// In:  the charts, the graph, one arc per edge. Out: the illegal pairs, sorted, without pairs of
+//      edges sharing a node.
+std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGraph& graph,
+                                            const std::vector<Arc>& arcs, const Progress& progress);
 
 }  // namespace tessera::layout

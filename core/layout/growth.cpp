@@ -45,8 +45,6 @@ const char* to_string(LineEnd end) {
       return "boundary";
     case LineEnd::singularity:
       return "singularity";
-    case LineEnd::blocked:
-      return "blocked";
   }
   return "unknown";
 }
@@ -55,15 +53,8 @@ SeparatrixGrowth::SeparatrixGrowth(const Charts& charts, Ports ports, const Grow
     : charts_(charts), options_(options), collector_(ports.ports.size(), options.rho) {
   graph_.ports = std::move(ports);
   graph_.separatrices.resize(graph_.ports.ports.size());
-  for (Index line = 0; line < graph_.port_count(); ++line) {
-    const Port& port = graph_.ports.ports[line];
-    if (port.corner == kNoIndex) {
-      graph_.separatrices[line].end = LineEnd::blocked;
-      cursors_.emplace_back();
-    } else {
-      cursors_.push_back(cursor_at_corner(charts_, port.corner, port.direction));
-    }
-  }
+  for (const Port& port : graph_.ports.ports)
+    cursors_.push_back(cursor_at_corner(charts_, port.corner, port.direction));
   face_pieces_.resize(charts_.mesh.face_count());
 }
 

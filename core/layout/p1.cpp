@@ -4,8 +4,9 @@ namespace tessera::layout {
 
 matching::MatchingProblem matching_problem(const PortGraph& graph, double alpha) {
   matching::MatchingProblem problem;
-  problem.is_virtual.assign(graph.node_count(), 0);
-  for (std::size_t v = graph.port_count(); v < graph.node_count(); ++v) problem.is_virtual[v] = 1;
+  problem.is_virtual.assign(graph.node_count(), 1);
+  for (std::size_t v = 0; v < graph.port_count(); ++v)
+    problem.is_virtual[v] = graph.ports.ports[v].folded;
   problem.edges.reserve(graph.edges.size());
   for (const GraphEdge& e : graph.edges) problem.edges.push_back({e.u, e.v, edge_weight(e, alpha)});
   problem.conflicts.reserve(graph.conflicts.size());

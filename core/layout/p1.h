@@ -1,5 +1,6 @@
 // Program P1 (thesis Ch. 5, (5.1)-(5.4)) for a port graph: the nodes are the ports (matched
-// exactly once) and the virtual ports (at most once, Sec. 4.4), the edges carry
+// exactly once) and the virtual ports (at most once, Sec. 4.4; so are the folded ports of a
+// singular ring the parameterization left flipped, ports.h), the edges carry
 // w = L_base + alpha L_height (4.1), the conflicts are I with Z (Sec. 4.6). core/matching solves it
 // and tells which ports no matching can cover (Sec. 5.1).
 //

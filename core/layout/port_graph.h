@@ -24,7 +24,6 @@ enum class LineEnd : std::uint8_t {
   spiral,        // stopped by the spiral test (6.7), (6.8)
   boundary,      // left the surface (a virtual port, Sec. 4.4)
   singularity,   // ran into a singularity: a closed separatrix
-  blocked,       // its port has no corner to start in (Port::corner, a flipped chart)
 };
 
 const char* to_string(LineEnd end);

@@ -1,8 +1,10 @@
 #include "layout/ports.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include "layout/trace.h"
+#include "param/poisson.h"
 
 namespace tessera::layout {
 namespace {
@@ -54,32 +56,36 @@ std::size_t corner_for(const Charts& charts, const VertexRing& ring, double angl
   return n;
 }
 
-Port make_port(const Charts& charts, const SingularPoint& point, Index point_index, std::size_t k,
-               double angle) {
-  Port port;
-  port.singular_point = point_index;
-  port.number = static_cast<int>(point.ports.size());
-  port.angle = angle;
-  if (k == point.ring.corners.size()) return port;
-  port.corner = point.ring.corners[k].corner;
-  port.direction = nearest_axis(direction_in_corner(charts, point.ring, k, angle));
-  return port;
-}
-
-void add_ports(const Charts& charts, Index point_index, Ports& result) {
+// The isoline directions leaving the vertex inside ring corner k: the axis directions of its chart
+// whose ray crosses the far edge (backwards in a flipped chart), in the order the surface turns
+// through them. In an unfolded ring every axis direction of the cone lies in exactly one corner.
+void add_corner_ports(const Charts& charts, Index point_index, std::size_t k, Ports& result) {
   SingularPoint& point = result.points[point_index];
-  const VertexRing& ring = point.ring;
-  if (ring.corners.empty()) return;
-  const double first = ring.corners.front().start;
-  const double end = first + ring.total;
-  for (double angle = std::ceil((first - kAngleTolerance) / kQuarter) * kQuarter;
-       angle < end - kAngleTolerance; angle += kQuarter) {
-    // On the boundary the directions along the boundary edges are not ports.
-    if (ring.boundary && (angle < first + 1e-6 || angle > end - 1e-6)) continue;
-    const std::size_t k = corner_for(charts, ring, angle, true);
-    if (ring.boundary && k == ring.corners.size()) continue;
-    result.ports.push_back(make_port(charts, point, point_index, k, angle));
-    point.ports.push_back(static_cast<Index>(result.ports.size() - 1));
+  const RingCorner& corner = point.ring.corners[k];
+  const Eigen::Vector2d e1 = first_edge(charts, corner.corner);
+  std::vector<std::pair<double, Eigen::Vector2d>> found;
+  for (int turn = 0; turn < 4; ++turn) {
+    const Eigen::Vector2d d = quarter_turns({1, 0}, turn);
+    if (!corner_contains(charts, corner.corner, d)) continue;
+    const double angle = angle_between(e1, d);
+    // On the boundary the direction along the first boundary edge is not a port.
+    if (point.ring.boundary && k == 0 && std::abs(angle) < 1e-6) continue;
+    found.push_back({angle, d});
+  }
+  const bool flipped = charts.signed_area(charts.connectivity.face[corner.corner]) < 0;
+  std::sort(found.begin(), found.end(), [flipped](const auto& a, const auto& b) {
+    return flipped ? a.first > b.first : a.first < b.first;
+  });
+  for (const auto& [angle, d] : found) {
+    Port port;
+    port.singular_point = point_index;
+    port.number = static_cast<int>(point.ports.size());
+    port.angle = corner.start + angle;
+    port.corner = corner.corner;
+    port.direction = d;
+    port.folded = flipped;
+    point.ports.push_back(static_cast<Index>(result.ports.size()));
+    result.ports.push_back(port);
   }
 }
 
@@ -154,13 +160,17 @@ Index Ports::neighbour(Index port, int step) const {
 
 Index Ports::nearest_port(Index point_index, double angle) const {
   const SingularPoint& point = points[point_index];
-  if (point.ports.empty()) return kNoIndex;
-  const double first = ports[point.ports.front()].angle;
-  const int n = static_cast<int>(point.ports.size());
-  int k = static_cast<int>(std::lround((into_cone(point.ring, angle) - first) / kQuarter));
-  if (point.cyclic()) return point.ports[((k % n) + n) % n];
-  if (k < 0 || k >= n) return kNoIndex;
-  return point.ports[k];
+  Index nearest = kNoIndex;
+  double distance = std::numbers::pi / 4;  // beyond this no port is near
+  for (Index port : point.ports) {
+    double d = angle - ports[port].angle;
+    if (point.cyclic()) d = std::remainder(d, point.ring.total);
+    if (std::abs(d) < distance) {
+      distance = std::abs(d);
+      nearest = port;
+    }
+  }
+  return nearest;
 }
 
 Ports find_ports(const Charts& charts) {
@@ -170,7 +180,8 @@ Ports find_ports(const Charts& charts) {
     const Index index = static_cast<Index>(result.points.size());
     result.point_of_vertex[s.vertex] = index;
     result.points.push_back({vertex_ring(charts, s.vertex, s.valence * kQuarter), s.valence, {}});
-    add_ports(charts, index, result);
+    for (std::size_t k = 0; k < result.points[index].ring.corners.size(); ++k)
+      add_corner_ports(charts, index, k, result);
   }
   return result;
 }

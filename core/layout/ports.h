@@ -4,6 +4,12 @@
 // charts in that cone are the isoline directions at the vertex. A singularity of valence k has k
 // ports, numbered counterclockwise. On the boundary only the directions pointing into the surface
 // are ports; the two along the boundary are not (Sec. 4.4).
+//
+// Where the injectivity constraints left a flipped triangle in a singularity's ring, the ring is
+// folded and the isoline directions are the level-set branches that actually leave the vertex:
+// per corner, the axis directions whose ray crosses the far edge (backwards in the flipped chart).
+// Their number may then differ from the valence, and the branches that start backwards into the
+// flipped chart are marked folded: their triangles are not flat, P1 may leave them unmatched.
 #pragma once
 
 #include <vector>
@@ -51,9 +57,8 @@ struct Port {
   Index singular_point = 0;  // index into Ports::points
   int number = 0;            // counterclockwise at its singular point
   double angle = 0;          // unfolded angle in the singular point's ring
-  // The corner halfedge the port's isoline starts in; kNoIndex if no corner of the ring carries
-  // the direction (a flipped chart at the singularity): the port is a node of G without an isoline.
-  Index corner = kNoIndex;
+  Index corner = kNoIndex;   // the corner halfedge the port's isoline starts in
+  bool folded = false;       // that corner's chart is flipped (a folded ring)
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();  // axis-parallel, chart of face(corner)
 };
 
@@ -73,11 +78,12 @@ struct Ports {
   // The port next to `port` counterclockwise (step +1) or clockwise (step -1) at its singular
   // point, or kNoIndex where the boundary interrupts the order.
   Index neighbour(Index port, int step) const;
-  // The port of singular point `point` whose unfolded angle is nearest to `angle` (mod the cone).
+  // The port of singular point `point` whose unfolded angle is nearest to `angle` (mod the cone),
+  // kNoIndex if none is within 45 degrees.
   Index nearest_port(Index point, double angle) const;
 };
 
-// The ports of every singularity of param: valence many at an interior one.
+// The ports of every singularity of param: valence many at an interior one with an unfolded ring.
 Ports find_ports(const Charts& charts);
 
 }  // namespace tessera::layout

@@ -1,6 +1,8 @@
 #include "layout/quad_layout.h"
 
+#include <algorithm>
 #include <chrono>
+#include <iterator>
 
 #include "layout/conflicts.h"
 #include "layout/growth.h"
@@ -43,7 +45,9 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
   while (true) {
     growth.grow(length_limit, progress);
     result.graph = growth.graph();
-    result.curved_edges = remove_edges_without_arc(charts, result.graph);
+    const std::size_t candidates = result.graph.edges.size();
+    result.arcs = keep_edges_with_arcs(charts, result.graph);
+    result.curved_edges = candidates - result.graph.edges.size();
     const matching::MatchingProblem problem = matching_problem(result.graph, 0);
     result.unmatchable_ports =
         matching::deficient_ports(problem, std::vector<std::uint8_t>(problem.edges.size(), 1));
@@ -53,7 +57,12 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
     ++result.length_doublings;
   }
   clock.stage_done("separatrices");
-  result.graph.conflicts = illegal_crossings(result.graph, progress);
+  std::vector<EdgePair> in_frames = illegal_crossings(result.graph, progress);
+  std::vector<EdgePair> on_surface =
+      illegal_arc_crossings(charts, result.graph, result.arcs, progress);
+  std::set_union(in_frames.begin(), in_frames.end(), on_surface.begin(), on_surface.end(),
+                 std::back_inserter(result.graph.conflicts));
+  result.conflicts_on_surface_only = result.graph.conflicts.size() - in_frames.size();
   clock.stage_done("conflicts");
   return result;
 }
@@ -68,10 +77,7 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
   layout.matching = matching::solve_matching(matching_problem(graph.graph, alpha), solver,
                                              limits.max_solve_seconds, progress);
   clock.stage_done("P1");
-  for (std::uint32_t e : layout.matching.edges) {
-    progress.step("arcs", double(layout.arcs.size()) / double(layout.matching.edges.size()));
-    layout.arcs.push_back(*trace_arc(charts, graph.graph, e));
-  }
+  for (std::uint32_t e : layout.matching.edges) layout.arcs.push_back(graph.arcs[e]);
   layout.refined = refine_along_arcs(charts, layout.arcs);
   std::vector<std::int32_t> patch = assign_patches(layout.refined);
   clock.stage_done("layout");
