@@ -122,11 +122,13 @@ class FaceArrangement {
     sort_neighbours();
     std::vector<std::vector<bool>> used(adjacent_.size());
     for (std::size_t v = 0; v < adjacent_.size(); ++v) used[v].assign(adjacent_[v].size(), false);
+    // The outside lies left of the boundary cycle walked backwards; every other walk is a piece
+    // of the triangle, however thin (a sign test on the area would drop slivers and leave holes).
+    walk_face(cycle_[1], slot_of(cycle_[1], cycle_[0]), used);
     for (Index v = 0; v < adjacent_.size(); ++v) {
       for (std::size_t k = 0; k < adjacent_[v].size(); ++k) {
         if (used[v][k]) continue;
-        const std::vector<Index> polygon = walk_face(v, k, used);
-        if (signed_area(polygon) > 0) emit_polygon(polygon);
+        emit_polygon(walk_face(v, k, used));
       }
     }
   }
@@ -222,6 +224,11 @@ class FaceArrangement {
     }
   }
 
+  std::size_t slot_of(Index from, Index to) const {
+    const auto& around = adjacent_[from];
+    return std::find(around.begin(), around.end(), to) - around.begin();
+  }
+
   // The face on the left of the directed edge v -> adjacent_[v][k]: at each node turn to the
   // neighbour next clockwise from the one we came from.
   std::vector<Index> walk_face(Index v, std::size_t k, std::vector<std::vector<bool>>& used) const {
@@ -232,19 +239,11 @@ class FaceArrangement {
       used[from][slot] = true;
       polygon.push_back(from);
       const Index to = adjacent_[from][slot];
-      const auto& around = adjacent_[to];
-      const std::size_t back = std::find(around.begin(), around.end(), from) - around.begin();
-      slot = (back + around.size() - 1) % around.size();
+      const std::size_t around = adjacent_[to].size();
+      slot = (slot_of(to, from) + around - 1) % around;
       from = to;
     }
     return polygon;
-  }
-
-  double signed_area(const std::vector<Index>& polygon) const {
-    double area = 0;
-    for (std::size_t k = 0; k < polygon.size(); ++k)
-      area += cross(planar(polygon[k]), planar(polygon[(k + 1) % polygon.size()]));
-    return area / 2;
   }
 
   double triangle_area(Index a, Index b, Index c) const {
