@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace tessera::layout {
 namespace {
@@ -105,6 +106,22 @@ bool pieces_meet(const ArcPiece& p, const ArcPiece& q, double tolerance) {
   return !(a == 0 && b == 0);  // collinear pieces do not cross
 }
 
+Index singular_point_of(const PortGraph& graph, Index node) {
+  return graph.is_virtual(node) ? kNoIndex : graph.ports.ports[node].singular_point;
+}
+
+// Two arcs leaving one singularity that cross cut off a lens from it to the crossing: a patch
+// with two corners or, around a handle, one that touches itself (a corner used twice). Whatever
+// their alignment, such a crossing never borders four distinct corners.
+bool share_singularity(const PortGraph& graph, const GraphEdge& a, const GraphEdge& b) {
+  for (Index x : {a.u, a.v}) {
+    const Index s = singular_point_of(graph, x);
+    if (s != kNoIndex && (s == singular_point_of(graph, b.u) || s == singular_point_of(graph, b.v)))
+      return true;
+  }
+  return false;
+}
+
 bool at_singular_vertex(const PortGraph& graph, const SurfacePoint& a, const SurfacePoint& b) {
   return a.vertex != kNoIndex && a == b && graph.ports.point_of_vertex[a.vertex] != kNoIndex;
 }
@@ -130,7 +147,7 @@ std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGrap
         const GraphEdge &e = graph.edges[p.edge], &g = graph.edges[q.edge];
         if (share_node(e, g)) continue;
         const ArcPiece &a = p.pieces[here[i].second], &b = q.pieces[here[j].second];
-        if (base_along_u(e, a) != base_along_u(g, b)) continue;
+        if (base_along_u(e, a) != base_along_u(g, b) && !share_singularity(graph, e, g)) continue;
         if (!pieces_meet(a, b, tolerance)) continue;
         // Arcs leaving one singularity meet there, which is no crossing.
         if (at_singular_vertex(graph, a.from, b.from) || at_singular_vertex(graph, a.from, b.to) ||
@@ -142,6 +159,22 @@ std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGrap
   }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+std::vector<EdgePair> bigons(const PortGraph& graph, const std::vector<std::uint32_t>& chosen) {
+  std::map<std::pair<Index, Index>, std::vector<Index>> joining;
+  for (Index e : chosen) {
+    const Index s = singular_point_of(graph, graph.edges[e].u);
+    const Index t = singular_point_of(graph, graph.edges[e].v);
+    if (s != kNoIndex && t != kNoIndex && s != t) joining[std::minmax(s, t)].push_back(e);
+  }
+  std::vector<EdgePair> pairs;
+  for (const auto& [ends, edges] : joining)
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      for (std::size_t j = i + 1; j < edges.size(); ++j)
+        pairs.push_back({std::min(edges[i], edges[j]), std::max(edges[i], edges[j])});
+  std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
 

@@ -20,10 +20,17 @@ using Clock = std::chrono::steady_clock;
 class StageClock {
  public:
   explicit StageClock(std::vector<StageSeconds>& seconds) : seconds_(seconds) {}
+  // Adds to the stage's time when it runs again (another round of solve_layout()).
   void stage_done(const std::string& stage) {
     const Clock::time_point now = Clock::now();
-    seconds_.push_back({stage, std::chrono::duration<double>(now - last_).count()});
+    const double seconds = std::chrono::duration<double>(now - last_).count();
     last_ = now;
+    for (StageSeconds& done : seconds_) {
+      if (done.stage != stage) continue;
+      done.seconds += seconds;
+      return;
+    }
+    seconds_.push_back({stage, seconds});
   }
 
  private:
@@ -67,16 +74,16 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
   return result;
 }
 
-QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
-                        matching::SolverKind solver, const Limits& limits,
-                        const Progress& progress) {
-  QuadLayout layout;
-  layout.alpha = alpha;
-  layout.solver = solver;
-  StageClock clock(layout.seconds);
-  layout.matching = matching::solve_matching(matching_problem(graph.graph, alpha), solver,
-                                             limits.max_solve_seconds, progress);
+namespace {
+
+// One solve of P1 and the layout it gives (Ch. 5, LAYOUT_NOTES "The layout itself").
+void lay_out(const Charts& charts, const LayoutGraph& graph,
+             const matching::MatchingProblem& problem, const Limits& limits,
+             const Progress& progress, StageClock& clock, QuadLayout& layout) {
+  layout.matching =
+      matching::solve_matching(problem, layout.solver, limits.max_solve_seconds, progress);
   clock.stage_done("P1");
+  layout.arcs.clear();
   for (std::uint32_t e : layout.matching.edges) layout.arcs.push_back(graph.arcs[e]);
   layout.refined = refine_along_arcs(charts, layout.arcs);
   std::vector<std::int32_t> patch = assign_patches(layout.refined);
@@ -86,6 +93,35 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
       relative_standard_deviation(corner_angles(layout.refined, patch, layout.check));
   layout.refined.mesh.face_attributes["patch"] = std::move(patch);
   clock.stage_done("check");
+}
+
+}  // namespace
+
+// Sec. 5.1 in rounds: while the check finds patches that are no disks, the chosen pairs that
+// close loops (bigons()) become conflicts and P1 is solved again, within one time budget.
+QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
+                        matching::SolverKind solver, const Limits& limits,
+                        const Progress& progress) {
+  QuadLayout layout;
+  layout.alpha = alpha;
+  layout.solver = solver;
+  std::vector<StageSeconds> seconds;
+  StageClock clock(seconds);
+  matching::MatchingProblem problem = matching_problem(graph.graph, alpha);
+  Limits left = limits;
+  lay_out(charts, graph, problem, left, progress, clock, layout);
+  while (!layout.check.valid() && layout.matching.has_solution()) {
+    left.max_solve_seconds -= layout.matching.seconds;
+    const std::vector<EdgePair> pairs = bigons(graph.graph, layout.matching.edges);
+    if (pairs.empty() || !(left.max_solve_seconds > 0)) break;
+    for (const EdgePair& pair : pairs) problem.conflicts.push_back({pair.first, pair.second});
+    QuadLayout next = layout;
+    next.loop_conflicts += pairs.size();
+    lay_out(charts, graph, problem, left, progress, clock, next);
+    if (!next.matching.has_solution()) break;
+    layout = std::move(next);
+  }
+  layout.seconds = std::move(seconds);
   return layout;
 }
 
