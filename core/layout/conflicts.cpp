@@ -110,9 +110,7 @@ Index singular_point_of(const PortGraph& graph, Index node) {
   return graph.is_virtual(node) ? kNoIndex : graph.ports.ports[node].singular_point;
 }
 
-// Two arcs leaving one singularity that cross cut off a lens from it to the crossing: a patch
-// with two corners or, around a handle, one that touches itself (a corner used twice). Whatever
-// their alignment, such a crossing never borders four distinct corners.
+// The two edges have an end at the same singularity.
 bool share_singularity(const PortGraph& graph, const GraphEdge& a, const GraphEdge& b) {
   for (Index x : {a.u, a.v}) {
     const Index s = singular_point_of(graph, x);
@@ -128,9 +126,20 @@ bool at_singular_vertex(const PortGraph& graph, const SurfacePoint& a, const Sur
 
 }  // namespace
 
-std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGraph& graph,
-                                            const std::vector<Arc>& arcs,
-                                            const Progress& progress) {
+namespace {
+
+void sort_unique(std::vector<EdgePair>& pairs) {
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+}
+
+// The pairs of arcs whose pieces meet in a face (touching included, but not at a singularity both
+// leave) and for which keep(edge, piece, other edge, other piece) holds; edges sharing a node left
+// out.
+template <class Keep>
+std::vector<EdgePair> meeting_arcs(const Charts& charts, const PortGraph& graph,
+                                   const std::vector<Arc>& arcs, const Keep& keep,
+                                   const Progress& progress) {
   std::vector<std::vector<std::pair<Index, Index>>> in_face(charts.mesh.face_count());
   for (Index a = 0; a < arcs.size(); ++a)
     for (Index k = 0; k < arcs[a].pieces.size(); ++k)
@@ -147,9 +156,7 @@ std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGrap
         const GraphEdge &e = graph.edges[p.edge], &g = graph.edges[q.edge];
         if (share_node(e, g)) continue;
         const ArcPiece &a = p.pieces[here[i].second], &b = q.pieces[here[j].second];
-        if (base_along_u(e, a) != base_along_u(g, b) && !share_singularity(graph, e, g)) continue;
-        if (!pieces_meet(a, b, tolerance)) continue;
-        // Arcs leaving one singularity meet there, which is no crossing.
+        if (!keep(e, a, g, b) || !pieces_meet(a, b, tolerance)) continue;
         if (at_singular_vertex(graph, a.from, b.from) || at_singular_vertex(graph, a.from, b.to) ||
             at_singular_vertex(graph, a.to, b.from) || at_singular_vertex(graph, a.to, b.to))
           continue;
@@ -157,24 +164,49 @@ std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGrap
       }
     }
   }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  sort_unique(pairs);
   return pairs;
 }
 
-std::vector<EdgePair> bigons(const PortGraph& graph, const std::vector<std::uint32_t>& chosen) {
+std::vector<EdgePair> joining_same_singularities(const PortGraph& graph,
+                                                 const std::vector<Arc>& arcs) {
   std::map<std::pair<Index, Index>, std::vector<Index>> joining;
-  for (Index e : chosen) {
-    const Index s = singular_point_of(graph, graph.edges[e].u);
-    const Index t = singular_point_of(graph, graph.edges[e].v);
-    if (s != kNoIndex && t != kNoIndex && s != t) joining[std::minmax(s, t)].push_back(e);
+  for (const Arc& arc : arcs) {
+    const Index s = singular_point_of(graph, graph.edges[arc.edge].u);
+    const Index t = singular_point_of(graph, graph.edges[arc.edge].v);
+    if (s != kNoIndex && t != kNoIndex && s != t) joining[std::minmax(s, t)].push_back(arc.edge);
   }
   std::vector<EdgePair> pairs;
   for (const auto& [ends, edges] : joining)
     for (std::size_t i = 0; i < edges.size(); ++i)
       for (std::size_t j = i + 1; j < edges.size(); ++j)
         pairs.push_back({std::min(edges[i], edges[j]), std::max(edges[i], edges[j])});
-  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+}  // namespace
+
+std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGraph& graph,
+                                            const std::vector<Arc>& arcs,
+                                            const Progress& progress) {
+  const auto same_alignment = [](const GraphEdge& e, const ArcPiece& a, const GraphEdge& g,
+                                 const ArcPiece& b) {
+    return base_along_u(e, a) == base_along_u(g, b);
+  };
+  return meeting_arcs(charts, graph, arcs, same_alignment, progress);
+}
+
+std::vector<EdgePair> loop_pairs(const Charts& charts, const PortGraph& graph,
+                                 const std::vector<Arc>& chosen) {
+  const auto from_one_singularity = [&graph](const GraphEdge& e, const ArcPiece&,
+                                             const GraphEdge& g, const ArcPiece&) {
+    return share_singularity(graph, e, g);
+  };
+  std::vector<EdgePair> pairs =
+      meeting_arcs(charts, graph, chosen, from_one_singularity, Progress());
+  const std::vector<EdgePair> joining = joining_same_singularities(graph, chosen);
+  pairs.insert(pairs.end(), joining.begin(), joining.end());
+  sort_unique(pairs);
   return pairs;
 }
 

@@ -27,21 +27,23 @@ std::vector<EdgePair> illegal_crossings(const PortGraph& graph, const Progress& 
 // intersected face by face, and two crossing arcs are an illegal pair when their bases, turned
 // into the crossing face's chart, are parallel (bases are isolines: axis-parallel in every chart).
 // This finds the crossings that no frame of Algorithm 1 holds, where the separatrices through the
-// crossing stopped before it (at L_max, by the spiral test or at a singularity). Two arcs from
-// one singularity that cross are illegal whatever their alignment: the lens between them has the
-// singularity and the crossing as its only corners, or, around a handle, its patch touches itself.
+// crossing stopped before it (at L_max, by the spiral test or at a singularity).
 //
 // In:  the charts, the graph, one arc per edge. Out: the illegal pairs, sorted, without pairs of
 //      edges sharing a node.
 std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGraph& graph,
                                             const std::vector<Arc>& arcs, const Progress& progress);
 
-// The pairs among the chosen edges that join the same two singularities. Two such arcs close a
-// loop with two convex corners; by Gauss-Bonnet on the flat charts it cannot bound a disk without
-// a cone inside, so it runs around a handle, and unless other arcs cross it the patches beside
-// it are no disks (they touch themselves at its ends). Program P1 cannot see this (Lemma 5.1
-// assumes every region it leaves is a disk), so solve_layout() adds these pairs as conflicts
-// when its check fails and solves again.
-std::vector<EdgePair> bigons(const PortGraph& graph, const std::vector<std::uint32_t>& chosen);
+// The pairs among the chosen arcs that close a loop with two convex corners: arcs joining the same
+// two singularities, and arcs leaving one singularity that cross (the loop runs from it to the
+// crossing). By Gauss-Bonnet on the flat charts such a loop bounds no disk without a cone inside,
+// so it runs around a handle, and unless other arcs cut across it the patches beside it are no
+// disks: they touch themselves at its corners. Program P1 cannot see this (Lemma 5.1 takes every
+// region it leaves for a disk), so solve_layout() adds these pairs as conflicts when its check
+// fails and solves again.
+//
+// In:  the charts, the graph, the arcs of the chosen edges. Out: pairs of their edges, sorted.
+std::vector<EdgePair> loop_pairs(const Charts& charts, const PortGraph& graph,
+                                 const std::vector<Arc>& chosen);
 
 }  // namespace tessera::layout

@@ -56,6 +56,19 @@ std::size_t corner_for(const Charts& charts, const VertexRing& ring, double angl
   return n;
 }
 
+// True if `d` runs along the boundary edge that starts the first corner of a boundary ring or
+// ends its last corner.
+bool along_boundary_edge(const Charts& charts, const VertexRing& ring, std::size_t k,
+                         const Eigen::Vector2d& d) {
+  const Index corner = ring.corners[k].corner;
+  const auto along = [&d](const Eigen::Vector2d& edge) {
+    return std::abs(angle_between(edge, d)) < 1e-6;
+  };
+  if (k == 0 && along(first_edge(charts, corner))) return true;
+  const Eigen::Vector2d last = charts.uv(charts.connectivity.prev[corner]) - charts.uv(corner);
+  return k + 1 == ring.corners.size() && along(last);
+}
+
 // The isoline directions leaving the vertex inside ring corner k: the axis directions of its chart
 // whose ray crosses the far edge (backwards in a flipped chart), in the order the surface turns
 // through them. In an unfolded ring every axis direction of the cone lies in exactly one corner.
@@ -68,8 +81,8 @@ void add_corner_ports(const Charts& charts, Index point_index, std::size_t k, Po
     const Eigen::Vector2d d = quarter_turns({1, 0}, turn);
     if (!corner_contains(charts, corner.corner, d)) continue;
     const double angle = angle_between(e1, d);
-    // On the boundary the direction along the first boundary edge is not a port.
-    if (point.ring.boundary && k == 0 && std::abs(angle) < 1e-6) continue;
+    // On the boundary the directions along the two boundary edges are not ports (Sec. 4.4).
+    if (point.ring.boundary && along_boundary_edge(charts, point.ring, k, d)) continue;
     found.push_back({angle, d});
   }
   const bool flipped = charts.signed_area(charts.connectivity.face[corner.corner]) < 0;

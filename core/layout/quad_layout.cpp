@@ -97,8 +97,8 @@ void lay_out(const Charts& charts, const LayoutGraph& graph,
 
 }  // namespace
 
-// Sec. 5.1 in rounds: while the check finds patches that are no disks, the chosen pairs that
-// close loops (bigons()) become conflicts and P1 is solved again, within one time budget.
+// Ch. 5 in rounds: while the check finds patches that are no disks, the chosen pairs that close
+// loops (loop_pairs()) become conflicts and P1 is solved again, within one time budget.
 QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
                         matching::SolverKind solver, const Limits& limits,
                         const Progress& progress) {
@@ -112,7 +112,7 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
   lay_out(charts, graph, problem, left, progress, clock, layout);
   while (!layout.check.valid() && layout.matching.has_solution()) {
     left.max_solve_seconds -= layout.matching.seconds;
-    const std::vector<EdgePair> pairs = bigons(graph.graph, layout.matching.edges);
+    const std::vector<EdgePair> pairs = loop_pairs(charts, graph.graph, layout.arcs);
     if (pairs.empty() || !(left.max_solve_seconds > 0)) break;
     for (const EdgePair& pair : pairs) problem.conflicts.push_back({pair.first, pair.second});
     QuadLayout next = layout;

@@ -57,7 +57,7 @@ struct QuadLayout {
   RefinedMesh refined;  // refined.mesh.face_attributes["patch"]
   LayoutCheck check;
   double angle_rsd = 0;  // percent, over all patch corners (parameter space)
-  // Pairs of chosen arcs closing loops (conflicts.h, bigons()) added while the check failed.
+  // Pairs of chosen arcs closing loops (conflicts.h, loop_pairs()) added while the check failed.
   std::size_t loop_conflicts = 0;
   std::vector<StageSeconds> seconds;
 };
