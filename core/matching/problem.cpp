@@ -23,7 +23,9 @@ void validate_edges(const MatchingProblem& problem, const std::string& source) {
     if (edge.u == edge.v)
       fail(source, name + " is a loop at node " + std::to_string(edge.u) +
                        "; an edge of the port graph joins two different ports");
-    if (!std::isfinite(edge.weight)) fail(source, name + " has a non-finite weight");
+    if (!(std::abs(edge.weight) <= kMaxWeight))
+      fail(source, name + " has the weight " + std::to_string(edge.weight) +
+                       "; weights are lengths and must be finite, at most 1e9 in magnitude");
   }
 }
 

@@ -41,10 +41,14 @@ struct MatchingProblem {
   std::size_t node_count() const { return is_virtual.size(); }
 };
 
+// Weights beyond this magnitude are refused: no layout makes them, and LP solvers (GLPK's simplex
+// with its relative tolerances of 1e-7) lose the small weights beside them.
+constexpr double kMaxWeight = 1e9;
+
 // Throws InputError naming the first bad node, edge or conflict (index out of range, self-loop,
-// non-finite weight, a conflict of an edge with itself) and LimitError when the sizes exceed
-// limits.max_matching_nodes, max_matching_edges or max_matching_conflicts. `source` (a file name)
-// prefixes the messages.
+// a weight that is not finite or above kMaxWeight in magnitude, a conflict of an edge with itself)
+// and LimitError when the sizes exceed limits.max_matching_nodes, max_matching_edges or
+// max_matching_conflicts. `source` (a file name) prefixes the messages.
 void validate_problem(const MatchingProblem& problem, const Limits& limits,
                       const std::string& source);
 

@@ -11,6 +11,9 @@
 
 #include "export/glb.h"
 #include "export/writers.h"
+#include "matching/generate.h"
+#include "matching/instance_json.h"
+#include "matching/instance_lp.h"
 #include "mesh/shapes.h"
 #include "regmap/catalog.h"
 
@@ -88,6 +91,39 @@ void write_mesh_seeds(const fs::path& out) {
   write_seed(out / "fuzz_mesh_gltf", "seed-0", text_bytes(gltf_triangle()));
 }
 
+// Field files for the 20 faces of an icosahedron: a .rawfield with its four rotations and the
+// per-face format with a comment; the directions need not be tangent, the reader accepts any.
+void write_field_seeds(const fs::path& out) {
+  const std::size_t faces = tessera::icosphere(0).face_count();
+  std::ostringstream raw, plain;
+  raw << "4 " << faces << "\n";
+  plain << "# one direction per face\n";
+  for (std::size_t f = 0; f < faces; ++f) {
+    const double x = 1.0 + 0.1 * double(f), y = 0.5 - 0.05 * double(f), z = 0.25;
+    raw << x << ' ' << y << ' ' << z << ' ' << -y << ' ' << x << ' ' << z << ' ' << -x << ' ' << -y
+        << ' ' << z << ' ' << y << ' ' << -x << ' ' << z << "\n";
+    plain << x << ' ' << y << ' ' << z << "\n";
+  }
+  write_seed(out / "fuzz_field_rawfield", "seed-0", text_bytes(raw.str()));
+  write_seed(out / "fuzz_field_directions", "seed-0", text_bytes(plain.str()));
+}
+
+// Small P1 instances in both file forms: feasible, with virtual ports, and infeasible.
+void write_p1_seeds(const fs::path& out) {
+  tessera::matching::PlantedSpec feasible{.ports = 12, .extra_edges = 12, .conflicts = 10};
+  tessera::matching::PlantedSpec with_virtual = feasible;
+  with_virtual.virtual_ports = 3;
+  tessera::matching::PlantedSpec blocked = feasible;
+  blocked.blocked_squares = 1;
+  const tessera::matching::PlantedSpec specs[] = {feasible, with_virtual, blocked};
+  for (std::size_t i = 0; i < std::size(specs); ++i) {
+    const auto problem = tessera::matching::planted_instance(specs[i]);
+    const std::string n = std::to_string(i);
+    write_seed(out / "fuzz_p1_json", "seed-" + n, tessera::matching::write_instance_json(problem));
+    write_seed(out / "fuzz_p1_lp", "seed-" + n, tessera::matching::write_instance_lp(problem));
+  }
+}
+
 std::string conder_entry(const tessera::regmap::CatalogEntry& e) {
   std::ostringstream text;
   text << e.name << " :  Type {" << e.p << "," << e.q << "}_" << e.petrie << "  Order " << e.order
@@ -120,6 +156,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   write_mesh_seeds(argv[1]);
+  write_field_seeds(argv[1]);
+  write_p1_seeds(argv[1]);
   write_regmap_seeds(argv[1], argv[2]);
   return 0;
 }
