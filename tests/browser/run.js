@@ -4,6 +4,7 @@ import './page.test.js';
 import './regmap.test.js';
 import './field.test.js';
 import './surface.test.js';
+import './large-mesh.test.js';
 
 const ok = await runTests(process.argv[2] ?? '');
 process.exit(ok ? 0 : 1);
