@@ -95,10 +95,13 @@ void lay_out(const Charts& charts, const LayoutGraph& graph,
   clock.stage_done("check");
 }
 
+// Rounds of P1 after a failed check (loop_pairs()); each solve has the solver's time limit.
+constexpr int kMaxLoopRounds = 8;
+
 }  // namespace
 
 // Ch. 5 in rounds: while the check finds patches that are no disks, the chosen pairs that close
-// loops (loop_pairs()) become conflicts and P1 is solved again, within one time budget.
+// loops (loop_pairs()) become conflicts and P1 is solved again.
 QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
                         matching::SolverKind solver, const Limits& limits,
                         const Progress& progress) {
@@ -108,16 +111,15 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
   std::vector<StageSeconds> seconds;
   StageClock clock(seconds);
   matching::MatchingProblem problem = matching_problem(graph.graph, alpha);
-  Limits left = limits;
-  lay_out(charts, graph, problem, left, progress, clock, layout);
-  while (!layout.check.valid() && layout.matching.has_solution()) {
-    left.max_solve_seconds -= layout.matching.seconds;
+  lay_out(charts, graph, problem, limits, progress, clock, layout);
+  for (int round = 0;
+       round < kMaxLoopRounds && !layout.check.valid() && layout.matching.has_solution(); ++round) {
     const std::vector<EdgePair> pairs = loop_pairs(charts, graph.graph, layout.arcs);
-    if (pairs.empty() || !(left.max_solve_seconds > 0)) break;
+    if (pairs.empty()) break;
     for (const EdgePair& pair : pairs) problem.conflicts.push_back({pair.first, pair.second});
     QuadLayout next = layout;
     next.loop_conflicts += pairs.size();
-    lay_out(charts, graph, problem, left, progress, clock, next);
+    lay_out(charts, graph, problem, limits, progress, clock, next);
     if (!next.matching.has_solution()) break;
     layout = std::move(next);
   }
