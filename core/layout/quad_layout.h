@@ -7,7 +7,8 @@
 //  2. solve_layout(): program P1 with w = L_base + alpha L_height (Ch. 5) by a solver of
 //     core/matching,
 //     the chosen edges traced as arcs, the mesh refined along them, patches, the validity check,
-//     the angle RSD.
+//     the angle RSD; while the check finds patches that are no disks, P1 again with the chosen
+//     pairs that close loops around a handle as conflicts (conflicts.h, loop_pairs()).
 //
 // In:  the charts of M_f (charts.h), options. Out: plain values; the refined mesh carries the face
 //      attribute "patch". Throws LimitError (tracing steps or time), CancelledError.
