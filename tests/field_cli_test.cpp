@@ -102,6 +102,12 @@ TEST(CliParam, PrintsFiguresAndWritesUv) {
   expect_singularity_keys(json, -2);
   EXPECT_EQ(json["flipped_outside_singular_rings"], 0);
   EXPECT_LE(json["flipped_triangles"].get<int>(), json["flipped_before_injectivity"].get<int>());
+  const auto& injectivity = json["injectivity"];
+  EXPECT_LE(
+      injectivity["unsolved_programs"].get<int>() + injectivity["skipped_programs"].get<int>(),
+      injectivity["programs"].get<int>());
+  if (json["flipped_before_injectivity"].get<int>() > 0)
+    EXPECT_GT(injectivity["constrained_faces"].get<int>(), 0);
   EXPECT_LT(json["max_seam_error"].get<double>(), 1e-8);
   for (const char* step : {"field", "cut graph", "assembly", "solve", "injectivity"})
     EXPECT_TRUE(json["seconds"].contains(step)) << step;

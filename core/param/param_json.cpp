@@ -18,6 +18,12 @@ nlohmann::ordered_json param_json(const CrossField& field, const SeamlessParam& 
   json["flipped_before_injectivity"] = param.flipped_before_injectivity;
   json["max_seam_error"] = param.max_seam_error;
   json["energy"] = param.energy;
+  const InjectivityReport& report = param.injectivity;
+  json["injectivity"] = {{"rounds", report.rounds},
+                         {"programs", report.programs},
+                         {"unsolved_programs", report.unsolved_programs},
+                         {"skipped_programs", report.skipped_programs},
+                         {"constrained_faces", report.constrained_faces}};
   json["h"] = param.h;
   json["seconds"] = nlohmann::ordered_json::object();
   for (const StepTime& t : param.seconds) json["seconds"][t.step] = t.seconds;
