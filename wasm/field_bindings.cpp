@@ -48,7 +48,7 @@ Session& session_with_mesh() {
 val cross_field(const val& options, const val& on_progress) {
   return guard([&] {
     Session& s = session_with_mesh();
-    s.param.reset();
+    s.clear_param();
     const auto start = std::chrono::steady_clock::now();
     s.field = design_cross_field(*s.mesh, *s.connectivity, *s.frames, field_options(options),
                                  js_progress(on_progress));
@@ -87,6 +87,7 @@ val seamless_param(const val& options, const val& on_progress) {
     param_options.h_relative = number_option(options, "h", param_options.h_relative);
     if (!(param_options.h_relative > 0 && param_options.h_relative <= 1))
       throw InputError("option 'h' (relative to the bounding-box diagonal) must be in (0, 1]");
+    s.clear_param();
     s.param = seamless_parameterization(*s.mesh, *s.connectivity, *s.frames, *s.field,
                                         param_options, progress);
     std::vector<float> uv;

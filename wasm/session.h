@@ -7,6 +7,7 @@
 
 #include "field/cross_field.h"
 #include "field/face_frames.h"
+#include "layout/quad_layout.h"
 #include "mesh/connectivity.h"
 #include "mesh/mesh.h"
 #include "param/seamless_param.h"
@@ -20,10 +21,21 @@ struct Session {
   std::optional<FaceFrames> frames;
   std::optional<CrossField> field;
   std::optional<SeamlessParam> param;
+  // The quad layout: the graph of the ports (alpha-free, kept for re-solving) and the layout of
+  // the last alpha, kept for its export.
+  std::optional<layout::LayoutGraph> layout_graph;
+  std::optional<layout::QuadLayout> layout;
 
   void set_mesh(const Mesh& shown) {
     *this = Session();
     mesh = triangulate(shown);
+  }
+
+  // A new field or parameterization makes the layout products stale.
+  void clear_param() {
+    param.reset();
+    layout_graph.reset();
+    layout.reset();
   }
 };
 

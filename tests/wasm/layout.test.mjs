@@ -1,0 +1,106 @@
+// Quad layouts in the wasm module: the same layout as the native CLI on the same file (patch count,
+// P1 objective, validity), alpha solved again on the kept graph, GLB and PLY of the layout, clear
+// errors.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import validator from 'gltf-validator';
+import { loadTessera } from './tessera_module.mjs';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+const cli = path.join(root, 'build/native/cli/tessera');
+const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'tessera-layout-'));
+const tessera = await loadTessera();
+
+// A sample of the module written as OBJ, so that the CLI reads the very same mesh.
+function sampleFile(name) {
+  const mesh = tessera.sampleMesh(name);
+  const lines = [];
+  for (let i = 0; i < mesh.positions.length; i += 3) lines.push(`v ${mesh.positions[i]} ${mesh.positions[i + 1]} ${mesh.positions[i + 2]}`);
+  for (let i = 0; i < mesh.triangles.length; i += 3) lines.push(`f ${mesh.triangles[i] + 1} ${mesh.triangles[i + 1] + 1} ${mesh.triangles[i + 2] + 1}`);
+  const file = path.join(dir, `${name}.obj`);
+  fs.writeFileSync(file, lines.join('\n'));
+  return file;
+}
+
+// The layout of a file in the module at alpha, with the CLI's defaults (smooth field, sharp 35).
+function wasmLayout(file, alpha, stages = []) {
+  tessera.loadMesh(fs.readFileSync(file), path.basename(file));
+  tessera.crossField({ sharp: 35 }, undefined);
+  tessera.seamlessParam({}, undefined);
+  const graph = tessera.layoutGraph({}, (stage, fraction) => stages.push([stage, fraction]));
+  return { graph, layout: tessera.layoutSolve(alpha, {}, undefined) };
+}
+
+const nativeLayout = (file, alpha) =>
+  JSON.parse(execFileSync(cli, ['layout', file, '--alpha', String(alpha), '--json'], { encoding: 'utf8' }));
+
+test('native and wasm give the same layout of the sphere sample', () => {
+  const file = sampleFile('sphere');
+  const stages = [];
+  const { graph, layout } = wasmLayout(file, 5, stages);
+  const native = nativeLayout(file, 5);
+  const wasm = layout.info;
+  for (const key of ['singularities', 'graph_edges', 'conflicts', 'patches', 'valid', 'nodes', 'arcs', 'matching_status']) {
+    assert.deepEqual(wasm[key], native[key], key);
+  }
+  assert.ok(Math.abs(wasm.objective - native.objective) <= 1e-6 * Math.abs(native.objective), `objective ${wasm.objective} vs ${native.objective}`);
+  assert.ok(Math.abs(wasm.angle_rsd - native.angle_rsd) < 1e-6, 'angle RSD');
+  assert.equal(graph.info.graph_edges, native.graph_edges);
+  assert.ok(stages.some(([stage]) => stage === 'separatrices') && stages.some(([stage]) => stage === 'conflicts'), 'progress');
+
+  // The display arrays: one patch id per refined triangle, a colour per id, arcs, singularities.
+  const { refined, patchColors, arcs, singularities } = layout;
+  assert.equal(refined.patch.length, refined.triangles.length / 3);
+  const ids = new Set(refined.patch);
+  assert.equal(ids.size, wasm.patches);
+  assert.equal(patchColors.length, 3 * (Math.max(...ids) + 1));
+  assert.equal(arcs.offsets.length, wasm.arcs + 1);
+  assert.equal(arcs.offsets.at(-1), arcs.points.length / 3);
+  assert.equal(singularities.valences.length, wasm.singularities);
+  assert.equal(wasm.valid, wasm.problem_count === 0);
+});
+
+test('alpha is solved again on the kept graph; the result matches a fresh run', () => {
+  const file = sampleFile('sphere');
+  const first = wasmLayout(file, 5).layout.info;
+  const coarse = tessera.layoutSolve(0, {}, undefined).info;
+  assert.equal(coarse.alpha, 0);
+  assert.equal(coarse.graph_edges, first.graph_edges);
+  assert.ok(coarse.patches <= first.patches, 'alpha 0 gives the coarsest layout');
+  const again = tessera.layoutSolve(5, {}, undefined).info;
+  assert.equal(again.patches, first.patches);
+  assert.equal(again.objective, first.objective);
+  assert.equal(tessera.layoutSolve(5, { solver: 'glpk' }, undefined).info.objective.toFixed(6), first.objective.toFixed(6));
+  assert.equal(nativeLayout(file, 0).patches, coarse.patches, 'native at alpha 0');
+});
+
+test('the layout exports as GLB (0 validator errors, _PATCH) and PLY (face property patch)', async () => {
+  wasmLayout(sampleFile('sphere'), 5);
+  const glb = tessera.layoutGlb();
+  const report = await validator.validateBytes(glb);
+  assert.equal(report.issues.numErrors, 0, JSON.stringify(report.issues.messages.slice(0, 3)));
+  assert.match(Buffer.from(glb).toString('latin1'), /_PATCH/);
+  const ply = Buffer.from(tessera.layoutPly()).toString('latin1');
+  assert.match(ply.slice(0, 400), /property int patch/);
+});
+
+test('layout calls out of order and bad options are clear errors', () => {
+  tessera.sampleMesh('sphere');
+  const input = (pattern) => (e) => e.kind === 'input' && pattern.test(e.message);
+  assert.throws(() => tessera.layoutGraph({}, undefined), input(/parameterization/));
+  assert.throws(() => tessera.layoutSolve(5, {}, undefined), input(/parameterization/));
+  assert.throws(() => tessera.layoutGlb(), input(/no quad layout/));
+  tessera.seamlessParam({}, undefined);
+  assert.throws(() => tessera.layoutSolve(5, {}, undefined), input(/graph of the ports/));
+  assert.throws(() => tessera.layoutGraph({ rho: 0.5 }, undefined), input(/rho/));
+  tessera.layoutGraph({}, undefined);
+  assert.throws(() => tessera.layoutSolve(-1, {}, undefined), input(/alpha/));
+  assert.throws(() => tessera.layoutSolve(5, { solver: 'cplex' }, undefined), (e) => e.kind === 'input');
+  tessera.crossField({}, undefined);
+  assert.throws(() => tessera.layoutSolve(5, {}, undefined), input(/parameterization/), 'a new field keeps a stale graph');
+});

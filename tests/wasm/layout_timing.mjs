@@ -1,0 +1,53 @@
+// node tests/wasm/layout_timing.mjs <mesh> [alpha...]: times the quad layout of a mesh in the wasm
+// module (each stage, then P1 solved again on the kept graph for each alpha, as the page's slider
+// does) beside the native CLI on the same file. Prints one line per step.
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { loadTessera } from './tessera_module.mjs';
+
+const [file, ...alphaArgs] = process.argv.slice(2);
+if (!file) {
+  console.error('usage: node tests/wasm/layout_timing.mjs <mesh> [alpha...]');
+  process.exit(2);
+}
+const alphas = alphaArgs.length > 0 ? alphaArgs.map(Number) : [0, 1, 20, 5];
+const cli = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../build/native/cli/tessera');
+const tessera = await loadTessera();
+
+const timed = (label, run) => {
+  const start = performance.now();
+  const result = run();
+  const ms = performance.now() - start;
+  console.log(`wasm ${label.padEnd(28)} ${ms.toFixed(1).padStart(9)} ms`);
+  return { result, ms };
+};
+
+const steps = [
+  timed('load', () => tessera.loadMesh(fs.readFileSync(file), path.basename(file))),
+  timed('cross field', () => tessera.crossField({ sharp: 35 }, undefined)),
+  timed('seamless param', () => tessera.seamlessParam({}, undefined)),
+  timed('graph of the ports', () => tessera.layoutGraph({}, undefined)),
+  timed('layout at alpha 5', () => tessera.layoutSolve(5, {}, undefined)),
+];
+const first = steps.at(-1).result.info;
+const total = steps.reduce((sum, { ms }) => sum + ms, 0);
+console.log(`wasm total (alpha 5)                  ${total.toFixed(1).padStart(9)} ms`);
+const describe = (info) =>
+  `|S| ${info.singularities}, |E_G| ${info.graph_edges}, |I| ${info.conflicts}, |P| ${info.patches}, ` +
+  `valid ${info.valid}, P1 ${info.matching_status} ${info.objective}, RSD ${info.angle_rsd.toFixed(2)} %`;
+console.log(`wasm layout: ${describe(first)}`);
+for (const alpha of alphas) {
+  const { result } = timed(`re-solve at alpha ${alpha}`, () => tessera.layoutSolve(alpha, {}, undefined));
+  const s = result.info.seconds;
+  console.log(`     P1 ${(1000 * s.P1).toFixed(1)} ms, arcs+refine ${(1000 * s.layout).toFixed(1)} ms, check ${(1000 * s.check).toFixed(1)} ms; ${describe(result.info)}`);
+}
+
+if (fs.existsSync(cli)) {
+  const start = performance.now();
+  const native = JSON.parse(execFileSync(cli, ['layout', file, '--alpha', '5', '--json'], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }));
+  const ms = performance.now() - start;
+  console.log(`native CLI layout at alpha 5 (whole process) ${ms.toFixed(1)} ms; stages ${JSON.stringify(native.seconds)}`);
+  console.log(`native layout: ${describe(native)}`);
+}
