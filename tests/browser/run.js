@@ -5,6 +5,7 @@ import './regmap.test.js';
 import './field.test.js';
 import './surface.test.js';
 import './large-mesh.test.js';
+import './layout.test.js';
 
 const ok = await runTests(process.argv[2] ?? '');
 process.exit(ok ? 0 : 1);

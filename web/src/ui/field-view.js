@@ -9,11 +9,12 @@ import { FIELD_DEFAULTS, FIELD_PARSERS, readFieldOptions, sameField } from './fi
  * The Field view of the Quad layout mode: the options, the cross field of the mesh on screen
  * (crosses, singularities by valence) and its seamless parameterization (a texture), with figures.
  * root: the view's section; viewer; status (Status); request(label, command, payload) runs a worker
- * job (resolves undefined when it failed or was cancelled); onStateChange(partial state).
+ * job (resolves undefined when it failed or was cancelled); onStateChange(partial state);
+ * onFieldChange() when the field or the parameterization on screen is replaced or cleared.
  */
 export class FieldView {
-  constructor({ root, viewer, status, request, onStateChange }) {
-    Object.assign(this, { viewer, status, request, onStateChange });
+  constructor({ root, viewer, status, request, onStateChange, onFieldChange = () => {} }) {
+    Object.assign(this, { viewer, status, request, onStateChange, onFieldChange });
     this.part = (role) => root.querySelector(`[data-role=${role}]`);
     this.form = this.part('field-form');
     this.input = (name) => root.querySelector(`[name=${name}]`);
@@ -51,14 +52,31 @@ export class FieldView {
   }
 
   async computeFromForm() {
+    const options = this.readForm();
+    if (options) await this.compute(options);
+  }
+
+  /**
+   * The form's options with the field and parameterization of the mesh computed for them (now, or
+   * already on screen); null when the form is invalid or a job failed.
+   */
+  async computedOptions() {
+    const options = this.readForm();
+    if (!options) return null;
+    const shown = this.shown;
+    const current = shown?.param && sameField(shown.options, options) && shown.options.h === options.h;
+    if (!current) await this.compute(options);
+    return this.shown?.param ? options : null;
+  }
+
+  // The form's options, or null with the problems shown.
+  readForm() {
     const texts = Object.fromEntries(Object.keys(FIELD_PARSERS).map((key) => [key, this.input(key).value]));
     const { options, problems } = readFieldOptions(texts);
     for (const key of Object.keys(FIELD_PARSERS)) this.input(key).setAttribute('aria-invalid', String(key in problems));
-    if (Object.keys(problems).length > 0) {
-      this.status.showMessage('error', 'The field options cannot be used', Object.values(problems).join(' '));
-      return;
-    }
-    await this.compute(options);
+    if (Object.keys(problems).length === 0) return options;
+    this.status.showMessage('error', 'The field options cannot be used', Object.values(problems).join(' '));
+    return null;
   }
 
   /**
@@ -68,6 +86,7 @@ export class FieldView {
   async compute(options) {
     const mesh = this.mesh;
     if (!mesh) return;
+    this.onFieldChange();
     const field = { align: options.align, sharp: options.sharp };
     if (!this.shown || !sameField(this.shown.options, options)) {
       const result = await this.request('Designing the cross field', COMMANDS.crossField, { mesh, field });
@@ -104,6 +123,7 @@ export class FieldView {
 
   clear() {
     this.shown = null;
+    this.onFieldChange();
     for (const layer of ['crosses', 'singularities']) this.viewer.setLayer(layer, null);
     this.viewer.setUvSurface(null);
     this.part('field-result').hidden = true;
@@ -120,6 +140,12 @@ export class FieldView {
   showSharp() {
     const degrees = Number(this.input('sharp').value);
     this.input('sharp-value').textContent = degrees >= 180 ? 'none' : `${degrees}°`;
+  }
+
+  /** Unticks 'Show the crosses' (a layout on screen draws its own lines). */
+  hideCrosses() {
+    this.input('crosses').checked = false;
+    this.showCrosses();
   }
 
   showCrosses() {

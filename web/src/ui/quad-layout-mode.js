@@ -3,12 +3,13 @@ import { pickMeshFile } from './file-types.js';
 import { showInfo } from './info-panel.js';
 import { downloadBytes, downloadName } from './download.js';
 import { FieldView } from './field-view.js';
+import { LayoutView } from './layout-view.js';
 
 const DEFAULT_SAMPLE = 'genus2';
 
 /**
- * The Quad layout mode: a mesh from a sample or a file, its figures, its export, and the Field view
- * of its cross field and parameterization.
+ * The Quad layout mode: a mesh from a sample or a file, its figures, its export, the Field view
+ * of its cross field and parameterization, and the Layout view of its quad layout.
  * panel: the mode's section of the page; viewer, client (WorkerClient), jobs (Jobs), status (Status);
  * onStateChange(partial state) when what a link should share changes.
  */
@@ -26,6 +27,13 @@ export class QuadLayoutMode {
       status,
       request: (...args) => this.request(...args),
       onStateChange,
+      onFieldChange: () => this.layout.fieldChanged(),
+    });
+    this.layout = new LayoutView({
+      root: this.part('layout-view'),
+      viewer,
+      field: this.field,
+      request: (...args) => this.request(...args),
     });
 
     this.part('samples').addEventListener('change', (event) => this.showSample(event.target.value));
@@ -105,6 +113,7 @@ export class QuadLayoutMode {
     this.sample = source.sample ?? null;
     this.viewer.showMesh(mesh);
     this.field.setMesh(source);
+    this.layout.setMesh(source);
     showInfo(this.part('info'), mesh);
     this.part('export-glb').disabled = false;
     this.syncSampleMenu();

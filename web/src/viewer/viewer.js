@@ -74,6 +74,7 @@ export class Viewer {
     this.wireframe = false;
     this.uvSurface = null; // the mesh as separate corners with texture coordinates
     this.texture = 'off';
+    this.covered = false; // a layer (the patches of a layout) draws the surface in its place
     this.layers = new Map(); // name -> object
     this.coloredMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.6, metalness: 0, side: DoubleSide });
     this.coloredSurface = null;
@@ -203,10 +204,16 @@ export class Viewer {
   }
 
   showTexture() {
-    const textured = this.uvSurface !== null && this.texture !== 'off';
+    const textured = this.uvSurface !== null && this.texture !== 'off' && !this.covered;
     if (this.uvSurface) this.uvSurface.visible = textured;
-    if (this.surface) this.surface.visible = !textured;
+    if (this.surface) this.surface.visible = !textured && !this.covered;
     this.requestRender();
+  }
+
+  /** Whether a layer covers the surface (the plain and the textured one are then hidden). */
+  setSurfaceCovered(covered) {
+    this.covered = covered;
+    this.showTexture();
   }
 
   setWireframe(visible) {
@@ -221,6 +228,7 @@ export class Viewer {
     this.surface = null;
     this.edges = null;
     for (const name of [...this.layers.keys()]) this.setLayer(name, null);
+    this.covered = false;
     this.setUvSurface(null);
   }
 

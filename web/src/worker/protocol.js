@@ -29,6 +29,15 @@ export const COMMANDS = Object.freeze({
   // field: { align: 'smooth'|'curvature', sharp: degrees }; h: the sizing, relative to the bounding box.
   crossField: 'crossField', // payload: { mesh, field } -> { info, seconds, glyphs, singularities: { positions, valences }, markerRadius }
   seamlessParam: 'seamlessParam', // payload: { mesh, field, h } -> { info, corners: { positions, normals, uv } }
+  // The quad layout of the mesh shown at alpha. The worker keeps the graph of the ports of
+  // { mesh, field, h }: a new alpha only solves P1 again (resolved: true). info: the core's layout
+  // figures (`tessera layout --json` plus problem_count, patches_not_quads); graph: the graph's;
+  // solveSeconds: the re-solve in the worker (P1, arcs, patches, check); surface: the refined mesh
+  // coloured by patch { positions, normals, colors, triangles }; arcs: line segments (Float32Array).
+  quadLayout: 'quadLayout', // payload: { mesh, field, h, alpha } -> { info, graph, resolved, solveSeconds, surface, arcs, singularities: { positions, valences }, markerRadius }
+  // The layout of { mesh, field, h, alpha } as a file ('glb' or 'ply'), computed again if the core
+  // holds another one.
+  layoutExport: 'layoutExport', // payload: { mesh, field, h, alpha, format } -> { bytes }
   exportGlb: 'exportGlb', // payload: { positions, triangles, faceIds?, colors?, extras? } -> { bytes }
   // Regular maps. A map is a catalog name (R3.1, R3.1' for the dual) or a presentation in Conder's
   // text format; its info is { name, p, q, order, vertices, edges, faces, genus, orientable, euler,

@@ -10,6 +10,16 @@ export const PARAM_STAGES = Object.freeze([
   ['solve', 'Solving the Poisson system'],
   ['injectivity', 'Injectivity constraints near singularities (GLPK)'],
 ]);
+// The core's stages of the graph of the ports (after the parameterization) and of the layout at
+// one alpha, in order; the solver reports under its own name.
+export const GRAPH_STAGES = Object.freeze([
+  ['separatrices', 'Growing the separatrices (motorcycle growing)'],
+  ['conflicts', 'Finding the illegal crossings'],
+]);
+export const SOLVE_STAGES = Object.freeze([
+  ['exact', 'Solving program P1 (exact solver)'],
+  ['arcs', 'Tracing the arcs and cutting the mesh into patches'],
+]);
 // The core's stages of a regular surface, in order.
 export const SURFACE_STAGES = Object.freeze([
   ['hyperbolic tiling', 'Growing the hyperbolic tiling'],

@@ -10,8 +10,9 @@ import { vertexNormals } from './display.js';
  * Returns { positions, normals, colors } (Float32Array, 3 per vertex of the split mesh) and
  * triangles (Uint32Array, 3T, the same triangles over the split vertices). A vertex is split once
  * per quarter tube around it; its copies keep the vertex normal of the whole surface.
+ * color(tile) -> [r, g, b] in 0..1: the colour of a tile, by default the core's of a quarter tube.
  */
-export function tiledSurface({ positions, triangles, triangleFace, tile }) {
+export function tiledSurface({ positions, triangles, triangleFace, tile }, color = quarterTubeColor) {
   const normals = vertexNormals(positions, triangles);
   const { split, source, tileOf } = splitByTile(triangles, triangleFace, tile);
   const colorOf = new Map();
@@ -22,7 +23,7 @@ export function tiledSurface({ positions, triangles, triangleFace, tile }) {
     triangles: split,
   };
   source.forEach((v, w) => {
-    if (!colorOf.has(tileOf[w])) colorOf.set(tileOf[w], quarterTubeColor(tileOf[w]));
+    if (!colorOf.has(tileOf[w])) colorOf.set(tileOf[w], color(tileOf[w]));
     out.positions.set(positions.subarray(3 * v, 3 * v + 3), 3 * w);
     out.normals.set(normals.subarray(3 * v, 3 * v + 3), 3 * w);
     out.colors.set(colorOf.get(tileOf[w]), 3 * w);

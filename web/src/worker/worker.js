@@ -4,7 +4,16 @@ import { COMMANDS, PAGE_ERROR_KINDS, errorEvent, ownedBuffers, progressEvent, re
 import { polygonEdges, vertexNormals } from './display.js';
 import { cornerArrays, crossGlyphs, markerRadius, vertexPoints } from './field-display.js';
 import { tiledSurface } from './surface-display.js';
-import { FIELD_STAGES, PARAM_STAGES, SURFACE_STAGES, planStages, stagedProgress } from './stages.js';
+import { arcSegments, patchSurface } from './layout-display.js';
+import {
+  FIELD_STAGES,
+  GRAPH_STAGES,
+  PARAM_STAGES,
+  SOLVE_STAGES,
+  SURFACE_STAGES,
+  planStages,
+  stagedProgress,
+} from './stages.js';
 
 // The wasm build is a static file (web/public/wasm), not a source module: an absolute URL keeps
 // Vite's dev server from treating the import as one of its own.
@@ -14,8 +23,10 @@ let core = null; // Promise of the wasm module, created on first use, dropped af
 const catalogs = new WeakMap(); // wasm module -> its catalog rows, read into it once
 const surfaces = new WeakMap(); // wasm module -> the key (surfaceKey) of the last surface it built
 // The mesh the module's session holds (the core keeps the last mesh it built), with the arrays the
-// field view is drawn from: { module, id, positions, triangles, normals, fieldKey }, where id is the
-// page's number of the mesh and fieldKey names the options of the session's cross field.
+// field view is drawn from: { module, id, positions, triangles, normals, fieldKey, paramKey,
+// graphKey, graph, layoutKey }, where id is the page's number of the mesh, and the keys name the
+// options of the session's cross field, parameterization, graph of the ports (graph: its figures)
+// and layout (the graph's key and alpha).
 let session = null;
 
 function loadCore() {
@@ -80,10 +91,33 @@ const handlers = {
     // Shares of the bar as the stages' times on fertility (28k triangles).
     const onProgress = stagedProgress(planStages(PARAM_STAGES, [3, 0.2, 0.5, 1, 2.5], 0.1, 0.95), progress);
     if (shown.fieldKey !== fieldKey(field)) designField(shown, field, onProgress);
-    const result = shown.module.seamlessParam({ h }, onProgress);
+    const result = computeParam(shown, field, h, onProgress);
     progress('Preparing the view', 0.95);
     const corners = cornerArrays(shown.positions, shown.normals, shown.triangles);
     return { info: result.info, corners: { ...corners, uv: result.uv } };
+  },
+
+  async [COMMANDS.quadLayout]({ mesh, field, h, alpha }, progress) {
+    const shown = await sessionOf(mesh, progress);
+    const { result, resolved, solveSeconds } = layoutOf(shown, { field, h, alpha }, progress, 0.95);
+    progress('Preparing the view', 0.95);
+    return {
+      info: result.info,
+      graph: shown.graph,
+      resolved,
+      solveSeconds,
+      surface: patchSurface(result.refined, result.patchColors),
+      arcs: arcSegments(result.arcs.points, result.arcs.offsets),
+      singularities: result.singularities,
+      markerRadius: markerRadius(shown.positions, shown.triangles),
+    };
+  },
+
+  async [COMMANDS.layoutExport]({ mesh, field, h, alpha, format }, progress) {
+    const shown = await sessionOf(mesh, progress);
+    if (shown.layoutKey !== layoutKey(field, h, alpha)) layoutOf(shown, { field, h, alpha }, progress, 0.8);
+    progress(`Writing the ${format === 'ply' ? 'PLY' : 'GLB'} file`, 0.8);
+    return { bytes: format === 'ply' ? shown.module.layoutPly() : shown.module.layoutGlb() };
   },
 
   async [COMMANDS.exportGlb](payload, progress) {
@@ -170,7 +204,18 @@ function meshForViewer(mesh, progress) {
 // to the page, its arrays transferred).
 function remember(module, id, mesh) {
   const { positions, triangles, normals } = mesh;
-  session = { module, id, positions: positions.slice(), triangles: triangles.slice(), normals: normals.slice(), fieldKey: null };
+  session = {
+    module,
+    id,
+    positions: positions.slice(),
+    triangles: triangles.slice(),
+    normals: normals.slice(),
+    fieldKey: null,
+    paramKey: null,
+    graphKey: null,
+    graph: null,
+    layoutKey: null,
+  };
   return mesh;
 }
 
@@ -189,7 +234,45 @@ async function sessionOf(mesh, progress) {
   return session;
 }
 
+// The layout of the session's mesh at alpha: the field, parameterization and graph of the ports
+// computed unless the session holds them for these options, then P1 and the layout. Progress up to
+// `to`. Returns { result (the core's), resolved (the graph was kept), solveSeconds }.
+function layoutOf(shown, { field, h, alpha }, progress, to) {
+  const key = paramKey(field, h);
+  const resolved = shown.graphKey === key;
+  shown.layoutKey = null;
+  let from = 0.05;
+  if (!resolved) {
+    // Shares of the bar as the stages' times on fertility (28k triangles).
+    const stages = [...PARAM_STAGES, ...GRAPH_STAGES];
+    const onProgress = stagedProgress(planStages(stages, [3, 0.2, 0.5, 1, 2.5, 4, 1.5], 0.05, 0.8), progress);
+    if (shown.fieldKey !== fieldKey(field)) designField(shown, field, onProgress);
+    if (shown.paramKey !== key) computeParam(shown, field, h, onProgress);
+    shown.graph = shown.module.layoutGraph({}, onProgress).info;
+    shown.graphKey = key;
+    from = 0.8;
+  }
+  const onProgress = stagedProgress(planStages(SOLVE_STAGES, [1, 1], from, to), progress);
+  const started = performance.now();
+  const result = shown.module.layoutSolve(alpha, {}, onProgress);
+  const solveSeconds = (performance.now() - started) / 1000;
+  shown.layoutKey = layoutKey(field, h, alpha);
+  return { result, resolved, solveSeconds };
+}
+
+// The parameterization of the session's field with unit h; it replaces the graph and the layout.
+function computeParam(shown, field, h, onProgress) {
+  Object.assign(shown, { paramKey: null, graphKey: null, graph: null, layoutKey: null });
+  const result = shown.module.seamlessParam({ h }, onProgress);
+  shown.paramKey = paramKey(field, h);
+  return result;
+}
+
+const paramKey = (field, h) => `${fieldKey(field)} ${h}`;
+const layoutKey = (field, h, alpha) => `${paramKey(field, h)} ${alpha}`;
+
 function designField(shown, { align, sharp }, onProgress) {
+  Object.assign(shown, { paramKey: null, graphKey: null, graph: null, layoutKey: null });
   shown.fieldKey = null;
   const result = shown.module.crossField({ align, sharp }, onProgress);
   shown.fieldKey = fieldKey({ align, sharp });

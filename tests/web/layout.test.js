@@ -1,0 +1,132 @@
+import { describe, expect, it } from 'vitest';
+import { formatAlpha, layoutFigures, layoutVerdict } from '../../web/src/ui/layout-figures.js';
+import { arcSegments, patchSurface } from '../../web/src/worker/layout-display.js';
+import { GRAPH_STAGES, SOLVE_STAGES, planStages, stagedProgress } from '../../web/src/worker/stages.js';
+
+// The core's figures of the sphere's layout (tessera layout sphere.obj --json), trimmed.
+const SPHERE = {
+  singularities: 8,
+  graph_edges: 155,
+  conflicts: 1194,
+  patches: 6,
+  angle_rsd: 7.5,
+  valid: true,
+  objective: 1055.6363970828174,
+  seconds: { check: 0.002, separatrices: 0.05, P1: 0.001, conflicts: 0.001, layout: 0.004 },
+  alpha: 5,
+  ports: 24,
+  virtual_ports: 0,
+  nodes: 8,
+  arcs: 12,
+  solver: 'exact',
+  matching_status: 'optimal',
+  lower_bound: 1055.6363970828174,
+  unmatchable_ports: [],
+  average_separatrix_length: 40.1,
+  problems: [],
+  problem_count: 0,
+  patches_not_quads: 0,
+};
+
+describe('layoutVerdict', () => {
+  it('says valid with the patch count', () => {
+    expect(layoutVerdict(SPHERE)).toEqual({ valid: true, text: 'valid: 6 patches, all quads' });
+  });
+
+  it('counts the patches that are not quads', () => {
+    const info = { ...SPHERE, valid: false, patches: 9, patches_not_quads: 2, problem_count: 3 };
+    expect(layoutVerdict(info)).toEqual({ valid: false, text: 'invalid: 2 of 9 patches not quads' });
+  });
+
+  it('names a P1 without a matching and the ports no matching covers', () => {
+    const info = { ...SPHERE, valid: false, patches: 1, objective: null, matching_status: 'infeasible', unmatchable_ports: [0, 2, 3] };
+    expect(layoutVerdict(info).text).toBe('invalid: program P1 found no matching (infeasible; 3 ports no matching of G covers)');
+  });
+
+  it('falls back to the number of problems', () => {
+    const info = { ...SPHERE, valid: false, patches_not_quads: 0, problem_count: 4 };
+    expect(layoutVerdict(info).text).toBe('invalid: 4 problems found by the checker');
+  });
+});
+
+describe('layoutFigures', () => {
+  it('lists the figures of issue 4, the re-solve time and the stage times in pipeline order', () => {
+    const { figures, values } = layoutFigures({ info: SPHERE, solveSeconds: 0.0123 });
+    const keys = figures.map(([key]) => key);
+    for (const key of ['singularities', 'graph_edges', 'conflicts', 'patches', 'angle_rsd', 'objective', 'solve_seconds']) {
+      expect(keys).toContain(key);
+    }
+    expect(keys.filter((key) => key.startsWith('time_'))).toEqual(['time_separatrices', 'time_conflicts', 'time_P1', 'time_layout', 'time_check']);
+    const shown = Object.fromEntries(figures.map(([key, , format]) => [key, format(values[key])]));
+    expect(shown.angle_rsd).toBe('7.50 %');
+    expect(shown.ports).toBe('24 (0)');
+    expect(shown.solve_seconds).toBe('12 ms');
+    expect(shown.objective).toBe('1055.64');
+  });
+
+  it('shows a missing objective as a dash', () => {
+    const { figures, values } = layoutFigures({ info: { ...SPHERE, objective: null }, solveSeconds: 1 });
+    const [, , format] = figures.find(([key]) => key === 'objective');
+    expect(format(values.objective)).toBe('–');
+  });
+});
+
+describe('formatAlpha', () => {
+  it('writes the slider value as people do', () => {
+    expect(formatAlpha('5')).toBe('5');
+    expect(formatAlpha(0.5)).toBe('0.5');
+    expect(formatAlpha('12.50')).toBe('12.5');
+  });
+});
+
+describe('arcSegments', () => {
+  it('turns polylines into consecutive segments, skipping one-point arcs', () => {
+    const points = new Float32Array([0, 0, 0, 1, 0, 0, 1, 1, 0, 5, 5, 5, 2, 2, 2, 3, 3, 3]);
+    const offsets = new Uint32Array([0, 3, 4, 6]);
+    expect([...arcSegments(points, offsets)]).toEqual([0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 1, 0, 2, 2, 2, 3, 3, 3]);
+    expect(arcSegments(new Float32Array(), new Uint32Array([0]))).toHaveLength(0);
+  });
+});
+
+describe('patchSurface', () => {
+  it('splits vertices between patches and colours each patch with the core colour', () => {
+    // Two triangles over a shared edge, in patches 0 and 1.
+    const refined = {
+      positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0]),
+      triangles: new Uint32Array([0, 1, 2, 1, 3, 2]),
+      triangleFace: new Uint32Array([0, 1]),
+      patch: new Int32Array([0, 1]),
+    };
+    const colors = new Float32Array([1, 0, 0, 0, 0, 1]);
+    const surface = patchSurface(refined, colors);
+    expect(surface.positions.length / 3).toBe(6);
+    expect(surface.triangles).toHaveLength(6);
+    const colorOf = (corner) => [...surface.colors.subarray(3 * surface.triangles[corner], 3 * surface.triangles[corner] + 3)];
+    expect(colorOf(0)).toEqual([1, 0, 0]);
+    expect(colorOf(3)).toEqual([0, 0, 1]);
+    expect(surface.triangles[1]).not.toBe(surface.triangles[3]); // vertex 1 split between the patches
+  });
+
+  it('shows patch ids without a colour grey', () => {
+    const refined = {
+      positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]),
+      triangles: new Uint32Array([0, 1, 2]),
+      triangleFace: new Uint32Array([0]),
+      patch: new Int32Array([4]),
+    };
+    expect([...patchSurface(refined, new Float32Array(3)).colors.subarray(0, 3)]).toEqual([0.5, 0.5, 0.5]);
+  });
+});
+
+describe('layout stages', () => {
+  it('map the core stage names onto the bar', () => {
+    const seen = [];
+    const onProgress = stagedProgress(planStages([...GRAPH_STAGES, ...SOLVE_STAGES], [1, 1, 1, 1], 0, 1), (label, f) => seen.push([label, f]));
+    onProgress('conflicts', 0.5);
+    onProgress('arcs', 1);
+    expect(seen).toEqual([
+      ['Finding the illegal crossings', 0.375],
+      ['Tracing the arcs and cutting the mesh into patches', 1],
+    ]);
+  });
+});
