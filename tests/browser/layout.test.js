@@ -56,6 +56,19 @@ test('Layout: the sphere gets a valid layout of coloured patches; alpha solves a
   assert.match(await verdict(page).textContent(), /^(valid|invalid): /);
   await page.screenshot({ path: `${RESULTS}/layout-sphere-alpha0.png` });
 
+  // Keys move the slider step by step, each a change: the re-solves queue, the last alpha wins, and
+  // the worker keeps its graph (no cancel, no rebuild in a fresh core).
+  const stages = [];
+  await page.exposeFunction('reportStage', (text) => stages.push(text));
+  await page.evaluate(() => {
+    const stage = document.querySelector('#status [data-role=stage]');
+    new MutationObserver(() => window.reportStage(stage.textContent)).observe(stage, { childList: true, characterData: true, subtree: true });
+  });
+  for (let i = 0; i < 3; i++) await page.locator('[data-role=alpha]').press('ArrowRight');
+  await laidOut(page, 1.5);
+  assert.equal(await page.locator('[data-role=alpha-value]').textContent(), '1.5');
+  assert.ok(!stages.some((text) => /fresh core|separatrices|Cancelled/.test(text)), `stages: ${[...new Set(stages)].join(' | ')}`);
+
   const [glb] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download GLB' }).click()]);
   assert.equal(glb.suggestedFilename(), 'sphere-layout.glb');
   await glb.saveAs(`${RESULTS}/sphere-layout.glb`);

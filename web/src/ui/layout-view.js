@@ -22,6 +22,8 @@ export class LayoutView {
     this.alpha = this.part('alpha');
     this.mesh = null; // where the mesh on screen came from
     this.shown = null; // { payload, result }: the layout on screen and what it was asked with
+    this.wantedAlpha = null; // the slider's alpha while re-solves run one after another
+    this.resolving = false;
     this.alpha.value = String(DEFAULT_ALPHA);
     this.showAlpha();
 
@@ -50,10 +52,25 @@ export class LayoutView {
     await this.solve({ mesh: this.mesh, field: { align, sharp }, h, alpha: Number(this.alpha.value) });
   }
 
-  /** A new alpha: P1 again on the kept graph (nothing to do before a layout was run). */
+  /**
+   * A new alpha: P1 again on the kept graph (nothing to do before a layout was run). Alphas chosen
+   * while a re-solve runs wait for it, the last one wins: starting a job cancels the running one,
+   * and a cancel restarts the worker, which would lose the graph.
+   */
   async resolve() {
     if (!this.shown) return;
-    await this.solve({ ...this.shown.payload, alpha: Number(this.alpha.value) });
+    this.wantedAlpha = Number(this.alpha.value);
+    if (this.resolving) return;
+    this.resolving = true;
+    let tried = null;
+    try {
+      while (this.shown && this.wantedAlpha !== this.shown.payload.alpha && this.wantedAlpha !== tried) {
+        tried = this.wantedAlpha;
+        await this.solve({ ...this.shown.payload, alpha: tried });
+      }
+    } finally {
+      this.resolving = false;
+    }
   }
 
   async solve(payload) {
@@ -87,8 +104,6 @@ export class LayoutView {
     );
     this.part('layout-result').hidden = false;
     this.part('layout-result').scrollIntoView({ block: 'nearest' });
-    this.alpha.value = String(payload.alpha);
-    this.showAlpha();
   }
 
   async download(format) {
