@@ -52,7 +52,8 @@ test('native and wasm give the same layout of the sphere sample', () => {
   assert.ok(Math.abs(wasm.angle_rsd - native.angle_rsd) < 1e-6, 'angle RSD');
   assert.equal(graph.info.graph_edges, native.graph_edges);
   assert.ok(stages.length > 0, 'progress');
-  assert.ok(stages.every(([stage, fraction]) => ['separatrices', 'conflicts'].includes(stage) && fraction >= 0 && fraction <= 1));
+  assert.ok(stages.some(([stage]) => stage === 'conflicts'), 'conflicts progress');
+  assert.ok(stages.every(([stage, fraction]) => typeof stage === 'string' && fraction >= 0 && fraction <= 1));
 
   // The display arrays: one patch id per refined triangle, a colour per id, arcs, singularities.
   const { refined, patchColors, arcs, singularities } = layout;

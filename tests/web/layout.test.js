@@ -121,11 +121,12 @@ describe('patchSurface', () => {
 describe('layout stages', () => {
   it('map the core stage names onto the bar', () => {
     const seen = [];
-    const onProgress = stagedProgress(planStages([...GRAPH_STAGES, ...SOLVE_STAGES], [1, 1, 1, 1], 0, 1), (label, f) => seen.push([label, f]));
-    onProgress('conflicts', 0.5);
+    const stages = [...GRAPH_STAGES, ...SOLVE_STAGES];
+    const onProgress = stagedProgress(planStages(stages, stages.map(() => 1), 0, 1), (label, f) => seen.push([label, f]));
+    onProgress('separatrices', 0.5);
     onProgress('arcs', 1);
     expect(seen).toEqual([
-      ['Finding the illegal crossings', 0.375],
+      ['Growing the separatrices (motorcycle growing)', 0.5 / stages.length],
       ['Tracing the arcs and cutting the mesh into patches', 1],
     ]);
   });

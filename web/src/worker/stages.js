@@ -15,6 +15,7 @@ export const PARAM_STAGES = Object.freeze([
 export const GRAPH_STAGES = Object.freeze([
   ['separatrices', 'Growing the separatrices (motorcycle growing)'],
   ['conflicts', 'Finding the illegal crossings'],
+  ['arc crossings', 'Finding the crossings of the arcs on the surface'],
 ]);
 export const SOLVE_STAGES = Object.freeze([
   ['exact', 'Solving program P1 (exact solver)'],

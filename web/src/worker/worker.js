@@ -245,7 +245,7 @@ function layoutOf(shown, { field, h, alpha }, progress, to) {
   if (!resolved) {
     // Shares of the bar as the stages' times on fertility (28k triangles).
     const stages = [...PARAM_STAGES, ...GRAPH_STAGES];
-    const onProgress = stagedProgress(planStages(stages, [3, 0.2, 0.5, 1, 2.5, 4, 1.5], 0.05, 0.8), progress);
+    const onProgress = stagedProgress(planStages(stages, [3, 0.2, 0.5, 1, 2.5, 4, 1, 1], 0.05, 0.8), progress);
     if (shown.fieldKey !== fieldKey(field)) designField(shown, field, onProgress);
     if (shown.paramKey !== key) computeParam(shown, field, h, onProgress);
     shown.graph = shown.module.layoutGraph({}, onProgress).info;
