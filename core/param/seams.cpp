@@ -1,7 +1,10 @@
 #include "param/seams.h"
 
 #include <array>
+#include <cmath>
+#include <numbers>
 
+#include "mesh/geometry.h"
 #include "mesh/topology.h"
 #include "param/linear_elimination.h"
 #include "param/poisson.h"
@@ -28,6 +31,28 @@ void add_transition(LinearElimination& elimination, Index from, Index to, int r,
   }
 }
 
+// Sec. 4.4 takes the boundary for a parameter line: along each boundary edge whose face's cross is
+// aligned to it (alignment.h makes it so), the coordinate across the edge stays constant,
+// v(b) = v(a) for an edge along u_T and u(b) = u(a) for one along v_T. An edge more than
+// kBoundaryTolerance off both axes (the second boundary edge of a corner face) is left free.
+void add_boundary_isolines(LinearElimination& elimination, const Mesh& mesh, const Connectivity& c,
+                           const CrossField& combed, const Wedges& wedges) {
+  const double kBoundaryTolerance = std::sin(std::numbers::pi / 6);
+  for (Index h = 0; h < c.corner_count; ++h) {
+    if (!c.is_boundary_edge(c.edge[h])) continue;
+    const Index f = c.face[h];
+    const Eigen::Vector3d edge =
+        (mesh.positions[c.to_vertex[h]] - mesh.positions[c.from_vertex(h)]).normalized();
+    const Eigen::Vector3d u = combed.direction[f];
+    const Eigen::Vector3d v = face_normal(mesh, f).cross(u);
+    const double along_u = std::abs(edge.dot(u)), along_v = std::abs(edge.dot(v));
+    if (std::min(along_u, along_v) > kBoundaryTolerance) continue;
+    const Index across = along_u > along_v ? 1 : 0;  // the coordinate that stays constant
+    const Index a = wedges.corner_wedge[h], b = wedges.corner_wedge[c.next[h]];
+    elimination.add({{2 * b + across, 1.0}, {2 * a + across, -1.0}});
+  }
+}
+
 }  // namespace
 
 Eigen::SparseMatrix<double> seam_basis(const Mesh& mesh, const Connectivity& c,
@@ -49,6 +74,7 @@ Eigen::SparseMatrix<double> seam_basis(const Mesh& mesh, const Connectivity& c,
     add_transition(elimination, w[c.next[h]], w[t], r, translation);
     translation += 2;
   }
+  add_boundary_isolines(elimination, mesh, c, combed, wedges);
   // The energy does not see a translation of a whole component: pin one wedge of each.
   const Components components = connected_components(mesh, c);
   std::vector<std::uint8_t> pinned(components.count, 0);

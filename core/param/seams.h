@@ -3,12 +3,13 @@
 //   uv_g = J^r uv_f + t
 // at both ends of the edge: the rotation is the field's, the translation t is free (the "open"
 // parameterization of Sec. 2.1; it is not rounded to integers). Across uncut edges the combed
-// charts agree (r = 0, t = 0) because both faces share the wedges.
+// charts agree (r = 0, t = 0) because both faces share the wedges. Boundary edges are parameter
+// lines (Sec. 4.4): the coordinate across each one is constant along it.
 //
 // In:  mesh, connectivity, combed field, cut edges and wedges of the same mesh.
 // Out: the basis P (wedge variables = P y, poisson.h's variable order) in which every transition
-//      constraint holds and one wedge per connected component is pinned to (0, 0); afterwards the
-//      transitions themselves. Nothing throws.
+//      and boundary constraint holds and one wedge per connected component is pinned to (0, 0);
+//      afterwards the transitions themselves. Nothing throws.
 #pragma once
 
 #include <cstdint>
