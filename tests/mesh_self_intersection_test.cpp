@@ -31,6 +31,16 @@ TEST(SelfIntersection, CoplanarTriangles) {
   EXPECT_FALSE(triangles_intersect(a, b, c, {3, 3, 0}, {4, 3, 0}, {3, 4, 0}));
 }
 
+// Two faces of one cylinder, far apart along it, lie in one plane up to rounding: not crossing.
+TEST(SelfIntersection, NearlyCoplanarDistantTriangles) {
+  EXPECT_FALSE(triangles_intersect({1.839, 0.070, 0.473}, {1.839, 0.070, 0.240},
+                                   {1.790, 0.049, 0.240}, {1.839, 0.070, -0.707},
+                                   {1.790, 0.049, -0.707}, {1.790, 0.049, -0.473}));
+  EXPECT_TRUE(triangles_intersect({1.839, 0.070, 0.473}, {1.839, 0.070, -0.240},
+                                  {1.790, 0.049, 0.240}, {1.839, 0.070, -0.107},
+                                  {1.790, 0.049, -0.707}, {1.790, 0.049, 0.473}));
+}
+
 TEST(SelfIntersection, ClosedSurfacesDoNotCrossThemselves) {
   EXPECT_EQ(find_self_intersections(icosphere(3)).triangle_pairs, 0u);
   EXPECT_EQ(find_self_intersections(torus(2.0, 0.5, 48, 24)).triangle_pairs, 0u);

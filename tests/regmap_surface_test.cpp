@@ -106,6 +106,59 @@ TEST(RegmapSurface, R24IsTheGenus5SurfaceOfFigure96) {
   EXPECT_TRUE(b.surface.stats.self_intersections_searched);
 }
 
+// Sec. 9.6: the double covers of the Platonic solids branched at their face centres are recognized
+// among the catalog's duals and placed with the solid's rotations (all of them where the faces are
+// odd; the 2-Cube keeps six), verified on the mesh's vertices; none of them crosses itself.
+TEST(RegmapSurface, PlatonicDoubleCovers) {
+  struct Case {
+    const char* map;
+    const char* base;
+    long genus;
+    std::size_t symmetries;
+  };
+  for (const Case& c :
+       {Case{"R2.1'", "2-Cube", 9, 6}, Case{"R3.4'", "2-Octahedron", 13, 24},
+        Case{"R5.2'", "2-Dodecahedron", 21, 60}, Case{"R9.15'", "2-Icosahedron", 37, 60}}) {
+    const Built b = build(c.map);
+    expect_regular_surface(b, c.map);
+    const SurfaceStats& s = b.surface.stats;
+    EXPECT_EQ(s.base, c.base);
+    EXPECT_EQ(s.genus, c.genus) << c.map;
+    EXPECT_EQ(s.symmetries, c.symmetries) << c.map;
+    EXPECT_EQ(s.symmetries_verified, c.symmetries) << c.map;
+    EXPECT_EQ(s.self_intersections, 0u) << c.map;
+  }
+}
+
+// One and two junctions: the bouquet and dipole bases keep every two tubes apart (all such maps
+// up to genus 12, coarse tubes).
+TEST(RegmapSurface, BouquetsAndDipolesDoNotCrossThemselves) {
+  SurfaceOptions options;
+  options.tube.smoothness = 3;
+  std::size_t maps = 0;
+  for (const CatalogEntry& entry : catalog()) {
+    if (entry.genus > 12 || entry.vertices > 2) continue;
+    const Built b = build(entry.name, options);
+    EXPECT_EQ(b.surface.stats.base, entry.vertices == 1 ? "bouquet" : "dipole") << entry.name;
+    EXPECT_EQ(b.surface.stats.self_intersections, 0u) << entry.name;
+    ++maps;
+  }
+  EXPECT_GT(maps, 50u);
+}
+
+TEST(RegmapSurface, BaseOption) {
+  SurfaceOptions relax;
+  relax.base = SurfaceBase::Relax;
+  relax.find_self_intersections = false;
+  const Built b = build("R3.4'", relax);
+  EXPECT_EQ(b.surface.stats.base, "relaxation");
+  EXPECT_EQ(b.surface.stats.symmetries, 0u);
+  expect_regular_surface(b, "R3.4' relaxed");
+  SurfaceOptions platonic;
+  platonic.base = SurfaceBase::Platonic;
+  EXPECT_THROW(build("R3.1", platonic), InputError);
+}
+
 // The quarter tubes are the group elements, and A, B, C read off the mesh are right
 // multiplication by R, S and S^-1 T: the surface realizes the map's group (Sec. 9.5).
 TEST(RegmapSurface, MeshAdjacencyIsTheGroupsRightMultiplication) {

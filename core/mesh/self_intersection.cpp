@@ -25,6 +25,23 @@ std::array<double, 3> plane_distances(const Triangle& plane, const Triangle& t) 
   return {n.dot(t[0] - plane[0]), n.dot(t[1] - plane[0]), n.dot(t[2] - plane[0])};
 }
 
+// Signed distances below a billionth of the triangles' size count as on the plane: otherwise
+// rounding makes nearly coplanar neighbours on a smooth surface look as if they crossed.
+constexpr double kOnPlane = 1e-9;
+constexpr double kParallel = 1e-9;  // sine of the angle between two planes taken as parallel
+
+void snap_to_plane(std::array<double, 3>& d, double normal_length, const Triangle& s,
+                   const Triangle& t) {
+  double size = 0.0;
+  for (const Triangle* tri : {&s, &t})
+    for (int i = 0; i < 3; ++i)
+      size = std::max(size, ((*tri)[static_cast<std::size_t>(i)] -
+                             (*tri)[static_cast<std::size_t>((i + 1) % 3)])
+                                .norm());
+  for (double& x : d)
+    if (std::abs(x) <= kOnPlane * normal_length * size) x = 0.0;
+}
+
 bool strictly_one_side(const std::array<double, 3>& d) {
   return (d[0] > 0 && d[1] > 0 && d[2] > 0) || (d[0] < 0 && d[1] < 0 && d[2] < 0);
 }
@@ -163,12 +180,17 @@ bool triangles_intersect(const Vector3d& a, const Vector3d& b, const Vector3d& c
   const Triangle s = {a, b, c}, t = {d, e, f};
   const Vector3d ns = (b - a).cross(c - a), nt = (e - d).cross(f - d);
   if (ns.squaredNorm() == 0 || nt.squaredNorm() == 0) return false;  // degenerate: not tested
-  const std::array<double, 3> dt = plane_distances(s, t);
+  std::array<double, 3> dt = plane_distances(s, t);
+  snap_to_plane(dt, ns.norm(), s, t);
   if (strictly_one_side(dt)) return false;
-  const std::array<double, 3> ds = plane_distances(t, s);
+  std::array<double, 3> ds = plane_distances(t, s);
+  snap_to_plane(ds, nt.norm(), s, t);
   if (strictly_one_side(ds)) return false;
-  if (dt[0] == 0 && dt[1] == 0 && dt[2] == 0) return coplanar_intersect(s, t, ns);
   const Vector3d line = ns.cross(nt);
+  // Parallel planes (all distances on the plane) or planes too close to parallel for their common
+  // line to be computed: the 2D test.
+  if ((dt[0] == 0 && dt[1] == 0 && dt[2] == 0) || line.norm() <= kParallel * ns.norm() * nt.norm())
+    return coplanar_intersect(s, t, ns);
   const std::array<double, 2> is = crossing_interval(s, ds, line);
   const std::array<double, 2> it = crossing_interval(t, dt, line);
   return is[0] <= it[1] && it[0] <= is[1];

@@ -30,7 +30,7 @@ double median_dart_length(const EmbeddedGraph& embedded, const EdgeGraph& graph)
   for (std::size_t d = 0; d < graph.dart_node.size(); ++d) {
     const auto v = static_cast<std::size_t>(graph.dart_node[d]);
     const auto e = static_cast<std::size_t>(graph.dart_edge[d]);
-    lengths.push_back((embedded.edge_midpoint[e] - embedded.node_position[v]).norm());
+    lengths.push_back((embedded.midpoint(e) - embedded.node_position[v]).norm());
   }
   const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
   std::nth_element(lengths.begin(), middle, lengths.end());
@@ -60,6 +60,11 @@ JunctionOrder junction_order(const EdgeGraph& graph) {
     } while (d != static_cast<std::int32_t>(start));
   }
   order.valence = order.node_darts.empty() ? 0 : static_cast<int>(order.node_darts[0].size());
+  order.edge_darts.assign(graph.edge_count, {-1, -1});
+  for (std::size_t d = 0; d < darts; ++d) {
+    auto& ends = order.edge_darts[static_cast<std::size_t>(graph.dart_edge[d])];
+    (ends[0] < 0 ? ends[0] : ends[1]) = static_cast<std::int32_t>(d);
+  }
   return order;
 }
 
@@ -68,6 +73,13 @@ Eigen::Vector3d dart_direction(const EmbeddedGraph& embedded, const EdgeGraph& g
   const auto d = static_cast<std::size_t>(dart);
   const auto v = static_cast<std::size_t>(graph.dart_node[d]);
   return embedded.node_frame[v] * slot_direction(order.slot[d], order.valence);
+}
+
+const Eigen::Vector3d& first_waypoint(const EmbeddedGraph& embedded, const EdgeGraph& graph,
+                                      const JunctionOrder& order, std::int32_t dart) {
+  const auto e = static_cast<std::size_t>(graph.dart_edge[static_cast<std::size_t>(dart)]);
+  const std::vector<Eigen::Vector3d>& path = embedded.edge_path[e];
+  return order.edge_darts[e][0] == dart ? path.front() : path.back();
 }
 
 Eigen::Matrix3d fit_rotation(const std::vector<Eigen::Vector3d>& a,
@@ -89,9 +101,8 @@ void fit_junction_frames(EmbeddedGraph& embedded, const EdgeGraph& graph,
     std::vector<Eigen::Vector3d> from, to;
     std::vector<double> weights;
     for (std::int32_t d : order.node_darts[v]) {
-      const Eigen::Vector3d towards = embedded.edge_midpoint[static_cast<std::size_t>(
-                                          graph.dart_edge[static_cast<std::size_t>(d)])] -
-                                      embedded.node_position[v];
+      const Eigen::Vector3d towards =
+          first_waypoint(embedded, graph, order, d) - embedded.node_position[v];
       if (towards.norm() == 0.0) continue;
       from.push_back(slot_direction(order.slot[static_cast<std::size_t>(d)], order.valence));
       to.push_back(towards.normalized());
@@ -110,14 +121,14 @@ EmbeddedGraph jemisphere_embedding(const EdgeGraph& graph, const JunctionOrder& 
   embedded.reach = reach;
   embedded.arm = arm;
   for (const Vec3& p : graph.node_position) embedded.node_position.push_back(to_eigen(p));
-  for (const Vec3& p : graph.edge_position) embedded.edge_midpoint.push_back(to_eigen(p));
+  for (const Vec3& p : graph.edge_position) embedded.edge_path.push_back({to_eigen(p)});
   embedded.node_frame.assign(graph.node_count, Eigen::Matrix3d::Identity());
   const double length = median_dart_length(embedded, graph);
   if (!(length > 0.0))
     throw GeometryError("the Jemisphere positions of the edge graph coincide; cannot place it");
   const double scale = (reach + arm + 1.0) / length;
   for (Eigen::Vector3d& p : embedded.node_position) p *= scale;
-  for (Eigen::Vector3d& p : embedded.edge_midpoint) p *= scale;
+  for (std::vector<Eigen::Vector3d>& path : embedded.edge_path) path[0] *= scale;
   // The sphere's outward normal (the plane's for torus maps) is the junction's first guess.
   std::vector<Eigen::Vector3d> normal;
   for (const Eigen::Vector3d& p : embedded.node_position)

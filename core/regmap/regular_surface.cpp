@@ -1,5 +1,6 @@
 #include "regmap/regular_surface.h"
 
+#include <algorithm>
 #include <chrono>
 #include <set>
 
@@ -7,9 +8,11 @@
 #include "mesh/connectivity.h"
 #include "mesh/edge_table.h"
 #include "mesh/self_intersection.h"
+#include "mesh/symmetry.h"
 #include "mesh/topology.h"
 #include "regmap/embedded_graph.h"
 #include "regmap/line_graph.h"
+#include "regmap/symmetric_base.h"
 #include "regmap/triangle_tiling.h"
 
 namespace tessera::regmap {
@@ -19,13 +22,28 @@ namespace {
 struct Placement {
   EmbeddedGraph embedded;
   std::string base;
+  std::vector<Eigen::Matrix3d> symmetries;
   RelaxReport relaxation;
 };
 
+// Sec. 9.6: the symmetric base when the map has one (and it is wanted), else Sec. 9.4's
+// relaxation from the Jemisphere.
 Placement place_graph(const LineGraph& line, const JunctionOrder& order, Geometry geometry,
                       const TubeShape& shape, const SurfaceOptions& options,
-                      const Progress& progress) {
+                      const std::string& map_name, const Progress& progress) {
   Placement placement;
+  if (options.base != SurfaceBase::Relax) {
+    if (auto symmetric = symmetric_placement(line.graph, order, shape)) {
+      placement.embedded = std::move(symmetric->embedded);
+      placement.base = symmetric->name;
+      placement.symmetries = std::move(symmetric->symmetries);
+      return placement;
+    }
+    if (options.base == SurfaceBase::Platonic)
+      throw InputError(map_name +
+                       " has no symmetric base (a double cover of a Platonic solid: {6,3}, "
+                       "{8,3}, {6,4}, {10,3}, {6,5}; or one or two junctions); use --base relax");
+  }
   placement.base = "relaxation";
   placement.embedded = jemisphere_embedding(line.graph, order, geometry, shape.reach, shape.arm);
   RelaxOptions relax = options.relax;
@@ -83,15 +101,17 @@ RegularSurface build_regular_surface(const Presentation& presentation, const Fin
   const TubeShape shape = tube_shape(options.tube, group.q);
   const std::size_t faces = group.order() * static_cast<std::size_t>(shape.across) *
                             static_cast<std::size_t>(shape.junction + shape.along);
+  // The fewest faces the mesh can have: refuse a map that is too large before placing it.
   check_limit(faces, limits.max_faces, "the regular surface's mesh (faces)", "--max-faces");
   const TriangleTiling tiling = build_tiling(group, limits, progress);
   const LineGraph line = build_line_graph(group, tiling);
   const JunctionOrder order = junction_order(line.graph);
-  const Placement placement = place_graph(line, order, tiling.geometry(), shape, options, progress);
+  const Placement placement =
+      place_graph(line, order, tiling.geometry(), shape, options, presentation.name, progress);
 
   RegularSurface surface;
   progress.step("tubification", 0.0);
-  surface.mesh = tubify(placement.embedded, line, order, shape);
+  surface.mesh = tubify(placement.embedded, line, order, shape, limits.max_faces);
   SurfaceStats& stats = surface.stats;
   stats.base = placement.base;
   stats.relaxation = placement.relaxation;
@@ -100,6 +120,9 @@ RegularSurface build_regular_surface(const Presentation& presentation, const Fin
   stats.vertices = surface.mesh.vertex_count();
   stats.faces = surface.mesh.face_count();
   stats.tube_radius = shape.radius;
+  stats.symmetries = placement.symmetries.size();
+  const std::vector<bool> kept = keeps_vertex_set(surface.mesh, placement.symmetries);
+  stats.symmetries_verified = static_cast<std::size_t>(std::count(kept.begin(), kept.end(), true));
   check_surface(surface.mesh, presentation, group.order(), surface);
   if (options.find_self_intersections) {
     stats.self_intersections = find_self_intersections(surface.mesh, progress).triangle_pairs;

@@ -1,8 +1,9 @@
 // The regular surface of a map by targetless tubification (thesis Sec. 9.2-9.5): the map's edge
 // graph (Line(G) identified, Sec. 9.3) placed in space, either on a symmetric base (a double cover
-// of a Platonic solid, symmetric_base.h) or by the constrained relaxation from the Jemisphere
-// (relaxation.h), tubified (tubification.h), and checked: closed, oriented, genus E - V + 1, 4E
-// quarter tubes, the relations of A, B, C on the mesh (surface_group.h), self-intersections.
+// of a Platonic solid, or one or two junctions: symmetric_base.h) or by the constrained relaxation
+// from the Jemisphere (relaxation.h), tubified (tubification.h), and checked: closed, oriented,
+// genus E - V + 1, 4E quarter tubes, the relations of A, B, C on the mesh (surface_group.h),
+// self-intersections, and the base's rotations on the mesh's vertices (mesh/symmetry.h).
 //
 // In:  the map's presentation (for its relators) and its enumerated group.
 // Out: the mesh (face attribute "tile") and its figures as plain values.
@@ -29,7 +30,7 @@ namespace tessera::regmap {
 
 enum class SurfaceBase {
   Automatic,  // the symmetric base when the map has one, else the relaxation
-  Platonic,   // the symmetric base, or an InputError
+  Platonic,   // the symmetric base (symmetric_base.h), or an InputError
   Relax,      // the relaxation from the Jemisphere
 };
 
@@ -41,10 +42,13 @@ struct SurfaceOptions {
 };
 
 struct SurfaceStats {
-  std::string base;           // "relaxation" or the symmetric base's name ("2-Octahedron", ...)
-  std::size_t junctions = 0;  // V of the edge graph
-  std::size_t tubes = 0;      // E
-  std::size_t vertices = 0;   // of the mesh
+  std::string base;            // "relaxation" or the symmetric base's name ("2-Octahedron", ...)
+  std::size_t symmetries = 0;  // rotations the symmetric base has (0 for the relaxation)
+  std::size_t symmetries_verified = 0;  // of those, the ones that map the mesh's vertices onto
+                                        // themselves
+  std::size_t junctions = 0;            // V of the edge graph
+  std::size_t tubes = 0;                // E
+  std::size_t vertices = 0;             // of the mesh
   std::size_t faces = 0;
   long euler_characteristic = 0;
   long genus = 0;

@@ -7,6 +7,8 @@
 
 #include <Eigen/Geometry>
 
+#include "base/error.h"
+
 namespace tessera::regmap {
 
 namespace {
@@ -55,7 +57,7 @@ void add_dart_springs(const EmbeddedGraph& embedded, const EdgeGraph& graph,
   for (std::size_t d = 0; d < darts.size(); ++d) {
     const auto v = static_cast<std::size_t>(graph.dart_node[d]);
     const auto e = static_cast<std::size_t>(graph.dart_edge[d]);
-    const Vector3d delta = embedded.edge_midpoint[e] - darts[d].tip;
+    const Vector3d delta = embedded.edge_path[e][0] - darts[d].tip;
     const double length = delta.norm();
     if (length > 0.0) {
       const double stretch = length - 1.0;
@@ -65,7 +67,7 @@ void add_dart_springs(const EmbeddedGraph& embedded, const EdgeGraph& graph,
       f.on_star(embedded, v, darts[d].tip, pull);
     }
     const Vector3d aligned = darts[d].tip + darts[d].direction;
-    const Vector3d miss = embedded.edge_midpoint[e] - aligned;
+    const Vector3d miss = embedded.edge_path[e][0] - aligned;
     f.energy += 0.5 * alignment * miss.squaredNorm();
     f.midpoint_force[e] -= alignment * miss;
     f.on_star(embedded, v, aligned, alignment * miss);
@@ -76,10 +78,10 @@ void add_dart_springs(const EmbeddedGraph& embedded, const EdgeGraph& graph,
 // inner loop is the relaxation's hot spot).
 void add_coulomb(const EmbeddedGraph& embedded, double charge, double node_charge, Forces& f) {
   const std::size_t nodes = embedded.node_position.size();
-  const std::size_t n = nodes + embedded.edge_midpoint.size();
+  const std::size_t n = nodes + embedded.edge_path.size();
   std::vector<double> x(n), y(n), z(n), q(n, std::sqrt(charge)), fx(n, 0.0), fy(n, 0.0), fz(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vector3d& p = i < nodes ? embedded.node_position[i] : embedded.edge_midpoint[i - nodes];
+    const Vector3d& p = i < nodes ? embedded.node_position[i] : embedded.edge_path[i - nodes][0];
     x[i] = p.x();
     y[i] = p.y();
     z[i] = p.z();
@@ -126,7 +128,7 @@ SegmentEnds segment_ends(std::size_t segment, const EmbeddedGraph& embedded, con
   const std::size_t d = segment / 2;
   if (segment % 2 == 0)
     return {embedded.node_position[static_cast<std::size_t>(graph.dart_node[d])], darts[d].tip};
-  return {darts[d].tip, embedded.edge_midpoint[static_cast<std::size_t>(graph.dart_edge[d])]};
+  return {darts[d].tip, embedded.edge_path[static_cast<std::size_t>(graph.dart_edge[d])][0]};
 }
 
 // Segments that meet by construction are not in contact: the two halves of a dart, the spokes of
@@ -287,13 +289,13 @@ double take_step(EmbeddedGraph& embedded, const Forces& f, int valence, double s
     }
     squared += move.squaredNorm();
   }
-  for (std::size_t e = 0; e < embedded.edge_midpoint.size(); ++e) {
+  for (std::size_t e = 0; e < embedded.edge_path.size(); ++e) {
     const Vector3d move = capped(step * f.midpoint_force[e] / 2.0, kMaxMove);
-    embedded.edge_midpoint[e] += move;
+    embedded.edge_path[e][0] += move;
     squared += move.squaredNorm();
   }
   const double bodies =
-      static_cast<double>(embedded.node_position.size() + embedded.edge_midpoint.size());
+      static_cast<double>(embedded.node_position.size() + embedded.edge_path.size());
   return std::sqrt(squared / bodies);
 }
 
@@ -305,7 +307,7 @@ double max_dart_angle(const EmbeddedGraph& embedded, const EdgeGraph& graph,
   const std::vector<DartPoints> darts = dart_points(embedded, graph, order);
   for (std::size_t d = 0; d < darts.size(); ++d) {
     const Vector3d chord =
-        embedded.edge_midpoint[static_cast<std::size_t>(graph.dart_edge[d])] - darts[d].start;
+        embedded.edge_path[static_cast<std::size_t>(graph.dart_edge[d])][0] - darts[d].start;
     if (chord.norm() == 0.0) continue;
     largest = std::max(
         largest, std::acos(std::clamp(darts[d].direction.dot(chord.normalized()), -1.0, 1.0)));
@@ -316,6 +318,8 @@ double max_dart_angle(const EmbeddedGraph& embedded, const EdgeGraph& graph,
 RelaxReport relax_embedding(EmbeddedGraph& embedded, const EdgeGraph& graph,
                             const JunctionOrder& order, const RelaxOptions& options,
                             const Progress& progress) {
+  for (const std::vector<Vector3d>& path : embedded.edge_path)
+    if (path.size() != 1) throw Error("the relaxation moves edge paths of one point, the midpoint");
   RelaxReport report;
   const int iterations = std::max(options.iterations, 0);
   const int contact_from = iterations / 2;

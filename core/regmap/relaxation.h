@@ -20,9 +20,10 @@
 // descent with a step that decays linearly over a fixed number of iterations: deterministic, and
 // the same on every platform up to floating point.
 //
-// In:  an edge graph, its junction order, an embedding (e.g. the Jemisphere one).
+// In:  an edge graph, its junction order, an embedding (e.g. the Jemisphere one) whose edge paths
+//      are single midpoints.
 // Out: the embedding moved in place; a report with the convergence measures.
-// Throws CancelledError through `progress`.
+// Throws CancelledError through `progress`; Error for a path of more than one point.
 #pragma once
 
 #include "base/progress.h"

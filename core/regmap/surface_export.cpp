@@ -18,6 +18,8 @@ nlohmann::ordered_json surface_stats_json(const SurfaceStats& s) {
           {"seconds", s.seconds},
           {"failed_relations", s.failed_relations},
           {"base", s.base},
+          {"symmetries", s.symmetries},
+          {"symmetries_verified", s.symmetries_verified},
           {"junctions", s.junctions},
           {"tubes", s.tubes},
           {"vertices", s.vertices},

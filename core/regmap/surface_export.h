@@ -13,7 +13,8 @@
 namespace tessera::regmap {
 
 // In this order: genus, euler_characteristic, quarter_tubes, closed, oriented, self_intersections
-// (null when not searched), relations_hold, seconds, failed_relations, base, junctions, tubes,
+// (null when not searched), relations_hold, seconds, failed_relations, base, symmetries,
+// symmetries_verified, junctions, tubes,
 // vertices, faces, tube_radius, relaxation {iterations, energy, energy_change, rms_motion,
 // max_dart_angle}.
 nlohmann::ordered_json surface_stats_json(const SurfaceStats& stats);

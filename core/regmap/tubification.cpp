@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "base/error.h"
+#include "base/limits.h"
 
 namespace tessera::regmap {
 
@@ -17,8 +18,7 @@ namespace {
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 constexpr double kPi = std::numbers::pi;
-constexpr int kFineSteps =
-    16;  // curve samples per ring interval, for the rotation-minimizing frame
+constexpr int kFineSteps = 64;  // samples per Bezier arc, for the rotation-minimizing frame
 
 // ---- The junction plate (Sec. 9.4, Fig. 9.13c) -------------------------------------------------
 
@@ -78,18 +78,34 @@ Vector3d direction_or(const Vector3d& v, const Vector3d& fallback) {
   return v.norm() > 1e-12 ? Vector3d(v.normalized()) : fallback;
 }
 
-// The two arcs of an edge's tube: from A's tube start through the midpoint to B's tube start,
-// leaving A along a and arriving at B against b. The tangent at the midpoint is the direction
-// between the arcs' outer control points (for a loop whose darts are opposite: parallel to them).
-std::array<Bezier, 2> edge_arcs(const Vector3d& start, const Vector3d& a, const Vector3d& middle,
-                                const Vector3d& end, const Vector3d& b, double arm) {
-  constexpr double kHandle = 0.4;  // the arm at the midpoint, a fraction of the arc's chord
-  const double first = (middle - start).norm(), second = (end - middle).norm();
-  const Vector3d outer_a = start + std::min(arm, first) * a,
-                 outer_b = end + std::min(arm, second) * b;
-  const Vector3d through = direction_or(outer_b - outer_a, direction_or(end - start, a));
-  return {Bezier{{start, outer_a, middle - kHandle * first * through, middle}},
-          Bezier{{middle, middle + kHandle * second * through, outer_b, end}}};
+// The centreline of an edge's tube: a C1 chain of cubic Bezier arcs through the knots (A's tube
+// start, the edge's waypoints, B's tube start). It leaves A along a and arrives at B against b,
+// with the junction's arm as control arm (less on a shorter first chord); at a waypoint its
+// tangent is the direction between the neighbouring knots, with arms of 0.4 of the chords (for a
+// loop whose darts are opposite, the tangent at the midpoint is parallel to them).
+std::vector<Bezier> centreline(const Vector3d& start, const Vector3d& a,
+                               const std::vector<Vector3d>& path, const Vector3d& end,
+                               const Vector3d& b, double arm) {
+  constexpr double kHandle = 0.4;
+  std::vector<Vector3d> knots = {start};
+  knots.insert(knots.end(), path.begin(), path.end());
+  knots.push_back(end);
+  const std::size_t last = knots.size() - 1;
+  std::vector<Vector3d> tangent(knots.size());
+  tangent.front() = a;
+  tangent.back() = -b;
+  for (std::size_t i = 1; i < last; ++i)
+    tangent[i] =
+        direction_or(knots[i + 1] - knots[i - 1], direction_or(knots[i + 1] - knots[i], a));
+  std::vector<Bezier> arcs;
+  for (std::size_t i = 0; i < last; ++i) {
+    const double chord = (knots[i + 1] - knots[i]).norm();
+    const double out = i == 0 ? std::min(arm, chord) : kHandle * chord;
+    const double in = i + 1 == last ? std::min(arm, chord) : kHandle * chord;
+    arcs.push_back(Bezier{
+        {knots[i], knots[i] + out * tangent[i], knots[i + 1] - in * tangent[i + 1], knots[i + 1]}});
+  }
+  return arcs;
 }
 
 // Sec. 9.4, Fig. 9.11: "the normals along each segment are interpolated from the junctions".
@@ -124,38 +140,74 @@ std::vector<Ring> frame_curve(const std::vector<Vector3d>& points,
   return rings;
 }
 
-// The 2 * along + 1 rings of an edge, from dart A's junction to dart B's.
+// Samples of arcs [first, last), kFineSteps on each, appended without repeating the first point of
+// an arc after the first.
+void sample_arcs(const std::vector<Bezier>& arcs, std::size_t first, std::size_t last,
+                 std::vector<Vector3d>& points, std::vector<Vector3d>& tangents) {
+  for (std::size_t k = first; k < last; ++k) {
+    for (int i = points.empty() ? 0 : 1; i <= kFineSteps; ++i) {
+      const double t = static_cast<double>(i) / kFineSteps;
+      points.push_back(arcs[k].at(t));
+      const Vector3d chord = arcs[k].p[3] - arcs[k].p[0];
+      tangents.push_back(
+          direction_or(arcs[k].derivative(t), direction_or(chord, Vector3d::UnitX())));
+    }
+  }
+}
+
+// Cumulative arc length of fine samples [from, to].
+std::vector<double> arc_lengths(const std::vector<Ring>& fine, std::size_t from, std::size_t to) {
+  std::vector<double> length = {0.0};
+  for (std::size_t i = from; i < to; ++i)
+    length.push_back(length.back() + (fine[i + 1].point - fine[i].point).norm());
+  return length;
+}
+
+// The fine samples from index `from` to `to` picked at `along` equal steps of arc length (the
+// first only when `rings` is empty).
+void pick_rings(const std::vector<Ring>& fine, std::size_t from, std::size_t to, int along,
+                std::vector<Ring>& rings) {
+  const std::vector<double> length = arc_lengths(fine, from, to);
+  std::size_t k = 0;
+  for (int r = rings.empty() ? 0 : 1; r <= along; ++r) {
+    const double target = length.back() * r / along;
+    while (k + 1 < length.size() && length[k + 1] <= target) ++k;
+    if (k + 1 < length.size() && length[k + 1] - target < target - length[k]) ++k;
+    rings.push_back(fine[from + (r == along ? length.size() - 1 : k)]);
+  }
+}
+
+// The 2 * along + 1 rings of an edge, from its first dart's junction to its second's, the middle
+// one at the edge's midpoint. `along` is the shape's, or more on a long tube, so that rings are
+// at most ring_spacing apart.
 std::vector<Ring> edge_rings(const EmbeddedGraph& embedded, const EdgeGraph& graph,
-                             const JunctionOrder& order, std::int32_t dart_a, std::int32_t dart_b,
-                             const TubeShape& shape) {
+                             const JunctionOrder& order, std::size_t edge, const TubeShape& shape) {
+  const auto [dart_a, dart_b] = order.edge_darts[edge];
   const auto node_a = static_cast<std::size_t>(graph.dart_node[static_cast<std::size_t>(dart_a)]);
   const auto node_b = static_cast<std::size_t>(graph.dart_node[static_cast<std::size_t>(dart_b)]);
   const Vector3d a = dart_direction(embedded, graph, order, dart_a);
   const Vector3d b = dart_direction(embedded, graph, order, dart_b);
-  const Vector3d start = embedded.node_position[node_a] + embedded.reach * a;
-  const Vector3d end = embedded.node_position[node_b] + embedded.reach * b;
-  const Vector3d middle = embedded.edge_midpoint[static_cast<std::size_t>(
-      graph.dart_edge[static_cast<std::size_t>(dart_a)])];
-  const std::array<Bezier, 2> arcs = edge_arcs(start, a, middle, end, b, embedded.arm);
-
-  const int steps = shape.along * kFineSteps;
+  const std::vector<Vector3d>& path = embedded.edge_path[edge];
+  const std::vector<Bezier> arcs =
+      centreline(embedded.node_position[node_a] + embedded.reach * a, a, path,
+                 embedded.node_position[node_b] + embedded.reach * b, b, embedded.arm);
+  const std::size_t middle_arc = (path.size() + 1) / 2;  // the first arc of B's half
   std::vector<Vector3d> points, tangents;
-  for (int half = 0; half < 2; ++half) {
-    for (int i = half == 0 ? 0 : 1; i <= steps; ++i) {
-      const double t = static_cast<double>(i) / steps;
-      const Vector3d chord = half == 0 ? Vector3d(middle - start) : Vector3d(end - middle);
-      points.push_back(arcs[half].at(t));
-      tangents.push_back(direction_or(arcs[half].derivative(t), direction_or(chord, a)));
-    }
-  }
+  sample_arcs(arcs, 0, middle_arc, points, tangents);
+  const std::size_t middle = points.size() - 1;
+  sample_arcs(arcs, middle_arc, arcs.size(), points, tangents);
   // The curve leaves A along a and enters B against b, exactly.
   tangents.front() = a;
   tangents.back() = -b;
   const std::vector<Ring> fine = frame_curve(points, tangents, embedded.node_frame[node_a].col(2),
                                              embedded.node_frame[node_b].col(2));
+  const double longer_half = std::max(arc_lengths(fine, 0, middle).back(),
+                                      arc_lengths(fine, middle, fine.size() - 1).back());
+  const int along =
+      std::max(shape.along, static_cast<int>(std::ceil(longer_half / shape.ring_spacing)));
   std::vector<Ring> rings;
-  for (int i = 0; i <= 2 * shape.along; ++i)
-    rings.push_back(fine[static_cast<std::size_t>(i * kFineSteps)]);
+  pick_rings(fine, 0, middle, along, rings);
+  pick_rings(fine, middle, fine.size() - 1, along, rings);
   return rings;
 }
 
@@ -168,23 +220,32 @@ std::vector<Ring> edge_rings(const EmbeddedGraph& embedded, const EdgeGraph& gra
 // side; an edge's rings use the angle index of its first dart (A).
 class SurfaceLayout {
  public:
-  SurfaceLayout(const EdgeGraph& graph, const JunctionOrder& order, const TubeShape& shape)
-      : graph_(graph), order_(order), shape_(shape), around_(2 * shape.across) {
+  // `along[e]`: the rings of edge e number 2 * along[e] + 1.
+  SurfaceLayout(const EdgeGraph& graph, const JunctionOrder& order, const TubeShape& shape,
+                std::vector<int> along)
+      : graph_(graph),
+        order_(order),
+        shape_(shape),
+        around_(2 * shape.across),
+        along_(std::move(along)) {
     const std::size_t darts = graph.dart_node.size();
-    edge_darts_.assign(graph.edge_count, {-1, -1});
-    for (std::size_t d = 0; d < darts; ++d) {
-      auto& pair = edge_darts_[static_cast<std::size_t>(graph.dart_edge[d])];
-      (pair[0] < 0 ? pair[0] : pair[1]) = static_cast<std::int32_t>(d);
-    }
     meridian_base_ = 2 * graph.node_count;
     plate_base_ = meridian_base_ + darts * static_cast<std::size_t>(shape.across - 1);
-    tube_base_ = plate_base_ + darts * static_cast<std::size_t>((shape.junction - 1) * around_);
-    vertex_count_ =
-        tube_base_ + graph.edge_count * static_cast<std::size_t>((2 * shape.along + 1) * around_);
+    std::size_t next =
+        plate_base_ + darts * static_cast<std::size_t>((shape.junction - 1) * around_);
+    for (int rings : along_) {
+      ring_base_.push_back(next);
+      next += static_cast<std::size_t>((2 * rings + 1) * around_);
+    }
+    vertex_count_ = next;
   }
 
   std::size_t vertex_count() const { return vertex_count_; }
-  const std::array<std::int32_t, 2>& edge_darts(std::size_t e) const { return edge_darts_[e]; }
+  // Columns of quads of a quarter tube on dart d: the junction's and its edge's along.
+  int columns(std::int32_t dart) const {
+    return shape_.junction +
+           along_[static_cast<std::size_t>(graph_.dart_edge[static_cast<std::size_t>(dart)])];
+  }
 
   Index pole(std::size_t node, bool top) const { return to_index(2 * node + (top ? 0 : 1)); }
   Index meridian(std::size_t dart, int j) const {
@@ -199,15 +260,13 @@ class SurfaceLayout {
         static_cast<std::size_t>(j));
   }
   Index ring(std::size_t edge, int i, int j) const {
-    return to_index(
-        tube_base_ +
-        (edge * static_cast<std::size_t>(2 * shape_.along + 1) + static_cast<std::size_t>(i)) *
-            static_cast<std::size_t>(around_) +
-        static_cast<std::size_t>(j));
+    return to_index(ring_base_[edge] +
+                    static_cast<std::size_t>(i) * static_cast<std::size_t>(around_) +
+                    static_cast<std::size_t>(j));
   }
 
   // Vertex (i, j) of the quarter tube on the left (or right) of dart d: i from the node (0) to the
-  // midpoint (junction + along), j from the top seam (0) to the bottom seam (across).
+  // midpoint (columns(d)), j from the top seam (0) to the bottom seam (across).
   Index quarter_tube_vertex(std::int32_t dart, bool left, int i, int j) const {
     const auto d = static_cast<std::size_t>(dart);
     const int across = shape_.across;
@@ -219,9 +278,9 @@ class SurfaceLayout {
     const int own = left ? j : (around_ - j) % around_;
     if (i < shape_.junction) return plate(d, i, own);
     const auto edge = static_cast<std::size_t>(graph_.dart_edge[d]);
-    const bool first = edge_darts_[edge][0] == dart;
+    const bool first = order_.edge_darts[edge][0] == dart;
     const int along = i - shape_.junction;
-    return ring(edge, first ? along : 2 * shape_.along - along,
+    return ring(edge, first ? along : 2 * along_[edge] - along,
                 first ? own : (around_ - own) % around_);
   }
 
@@ -232,8 +291,9 @@ class SurfaceLayout {
   const JunctionOrder& order_;
   TubeShape shape_;
   int around_;
-  std::vector<std::array<std::int32_t, 2>> edge_darts_;
-  std::size_t meridian_base_ = 0, plate_base_ = 0, tube_base_ = 0, vertex_count_ = 0;
+  std::vector<int> along_;
+  std::vector<std::size_t> ring_base_;
+  std::size_t meridian_base_ = 0, plate_base_ = 0, vertex_count_ = 0;
 };
 
 // The point at angle index j (of 2 * across) around a ring frame.
@@ -277,14 +337,11 @@ void place_junctions(const EmbeddedGraph& embedded, const EdgeGraph& graph,
   }
 }
 
-void place_tubes(const EmbeddedGraph& embedded, const EdgeGraph& graph, const JunctionOrder& order,
-                 const TubeShape& shape, const SurfaceLayout& layout,
-                 std::vector<Vector3d>& positions) {
-  for (std::size_t e = 0; e < graph.edge_count; ++e) {
-    const auto [a, b] = layout.edge_darts(e);
-    const std::vector<Ring> rings = edge_rings(embedded, graph, order, a, b, shape);
-    for (std::size_t i = 0; i < rings.size(); ++i) {
-      const Ring& r = rings[i];
+void place_tubes(const std::vector<std::vector<Ring>>& rings, const TubeShape& shape,
+                 const SurfaceLayout& layout, std::vector<Vector3d>& positions) {
+  for (std::size_t e = 0; e < rings.size(); ++e) {
+    for (std::size_t i = 0; i < rings[e].size(); ++i) {
+      const Ring& r = rings[e][i];
       for (int j = 0; j < 2 * shape.across; ++j)
         positions[layout.ring(e, static_cast<int>(i), j)] =
             around_ring(r.point, r.up, r.left(), shape.radius, j, shape.across);
@@ -297,7 +354,7 @@ void place_tubes(const EmbeddedGraph& embedded, const EdgeGraph& graph, const Ju
 // right.
 void add_quarter_tube(const SurfaceLayout& layout, std::int32_t dart, bool left, Element tile,
                       const TubeShape& shape, Mesh& mesh, std::vector<std::int32_t>& tiles) {
-  const int columns = shape.junction + shape.along;
+  const int columns = layout.columns(dart);
   for (int i = 0; i < columns; ++i) {
     for (int j = 0; j < shape.across; ++j) {
       const Index a = layout.quarter_tube_vertex(dart, left, i, j);
@@ -336,22 +393,34 @@ TubeShape tube_shape(const TubeOptions& options, int valence) {
                      : 0.15 * std::min(1.0, std::tan(half_angle) / std::tan(std::numbers::pi / 6));
   shape.fillet = options.roundness * shape.radius;
   shape.reach = (shape.radius + shape.fillet) / std::tan(half_angle);
-  shape.arm = 2.5 * shape.radius;
+  // A tube bends within about an arm; an arm of sqrt(2 r) keeps its curvature below 1 / r for the
+  // bends of about a unit that the placements make.
+  shape.arm = std::max(2.5 * shape.radius, std::sqrt(2.0 * shape.radius));
   shape.clearance = 4.0 * shape.radius;
   shape.across = options.smoothness;
   shape.along = options.smoothness;
   shape.junction = std::max(2, (3 * options.smoothness + 3) / 4);
+  shape.ring_spacing = 1.0 / options.smoothness;
   return shape;
 }
 
 Mesh tubify(const EmbeddedGraph& embedded, const LineGraph& line, const JunctionOrder& order,
-            const TubeShape& shape) {
+            const TubeShape& shape, std::size_t max_faces) {
   const EdgeGraph& graph = line.graph;
-  const SurfaceLayout layout(graph, order, shape);
+  std::vector<std::vector<Ring>> rings;
+  std::vector<int> along;
+  std::size_t faces = 0;
+  for (std::size_t e = 0; e < graph.edge_count; ++e) {
+    rings.push_back(edge_rings(embedded, graph, order, e, shape));
+    along.push_back(static_cast<int>(rings.back().size() / 2));
+    faces += 4 * static_cast<std::size_t>(shape.across * (shape.junction + along.back()));
+  }
+  check_limit(faces, max_faces, "the regular surface's mesh (faces)", "--max-faces");
+  const SurfaceLayout layout(graph, order, shape, std::move(along));
   Mesh mesh;
   mesh.positions.assign(layout.vertex_count(), Vector3d::Zero());
   place_junctions(embedded, graph, order, shape, layout, mesh.positions);
-  place_tubes(embedded, graph, order, shape, layout, mesh.positions);
+  place_tubes(rings, shape, layout, mesh.positions);
   std::vector<std::int32_t> tiles;
   for (std::size_t d = 0; d < graph.dart_element.size(); ++d) {
     const Element g = graph.dart_element[d];

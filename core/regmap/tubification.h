@@ -15,9 +15,9 @@
 // The junction is a rounded plate of thickness 2 r: over the node's tangent plane the darts' strips
 // of half-width r are joined by fillets of radius `roundness * r`, so q tubes meet without
 // overlapping for every q >= 3 (the fillets end where the tubes begin, at the reach
-// (r + fillet) / tan(pi / q)). Along an edge the tube follows two cubic Bezier arcs through the
-// midpoint, leaving each junction along its dart, with a rotation-minimizing frame whose twist is
-// spread so that the seams meet both junctions' normals.
+// (r + fillet) / tan(pi / q)). Along an edge the tube follows a C1 chain of cubic Bezier arcs
+// through the edge's waypoints, leaving each junction along its dart, with a rotation-minimizing
+// frame whose twist is spread so that the seams meet both junctions' normals.
 //
 // In:  an embedded edge graph with its Line(G) and junction order, a tube shape.
 // Out: one closed, consistently oriented quad mesh (outward normals) with the face attribute
@@ -40,12 +40,13 @@ struct TubeOptions {
 struct TubeShape {
   double radius = 0.0;
   double fillet = 0.0;
-  double reach = 0.0;      // from the node to where a tube begins
-  double arm = 0.0;        // a tube's first stretch along its dart, before it bends
-  double clearance = 0.0;  // the distance two tubes' centrelines should keep
-  int across = 0;          // quads from seam to seam
-  int along = 0;           // quads from the junction's end to the midpoint
-  int junction = 0;        // quads from the node to the junction's end
+  double reach = 0.0;         // from the node to where a tube begins
+  double arm = 0.0;           // a tube's first stretch along its dart, before it bends
+  double clearance = 0.0;     // the distance two tubes' centrelines should keep
+  int across = 0;             // quads from seam to seam
+  int along = 0;              // quads from the junction's end to the midpoint, at least
+  double ring_spacing = 0.0;  // longer tubes get more quads along, at most this far apart
+  int junction = 0;           // quads from the node to the junction's end
 };
 
 // The automatic radius is 0.15, smaller for q > 6 so that the junction keeps the same reach.
@@ -53,8 +54,9 @@ struct TubeShape {
 // not positive and finite, or a smoothness outside 2..32.
 TubeShape tube_shape(const TubeOptions& options, int valence);
 
-// Faces: 4E * across * (junction + along) quads.
+// Faces: 4 * across * (junction + along_e) quads per edge e, where along_e >= along grows with the
+// length of e's tube. Throws LimitError when they are more than max_faces.
 Mesh tubify(const EmbeddedGraph& embedded, const LineGraph& line, const JunctionOrder& order,
-            const TubeShape& shape);
+            const TubeShape& shape, std::size_t max_faces);
 
 }  // namespace tessera::regmap
