@@ -10,8 +10,10 @@
 
 #include "base/error.h"
 #include "mesh/connectivity.h"
+#include "mesh/self_intersection.h"
 #include "regmap/catalog.h"
 #include "regmap/regular_surface.h"
+#include "regmap/spine_base.h"
 
 namespace tessera::regmap {
 namespace {
@@ -61,6 +63,7 @@ SurfaceOptions quick_options() {
   SurfaceOptions options;
   options.tube.smoothness = 2;
   options.relax.iterations = 60;
+  options.relax.settle_iterations = 0;
   options.find_self_intersections = false;
   return options;
 }
@@ -130,7 +133,7 @@ TEST(RegmapSurface, PlatonicDoubleCovers) {
   }
 }
 
-// One and two junctions: the bouquet and dipole bases keep every two tubes apart (all such maps
+// One and two junctions: the bouquet and spine bases keep every two tubes apart (all such maps
 // up to genus 12, coarse tubes).
 TEST(RegmapSurface, BouquetsAndDipolesDoNotCrossThemselves) {
   SurfaceOptions options;
@@ -139,11 +142,32 @@ TEST(RegmapSurface, BouquetsAndDipolesDoNotCrossThemselves) {
   for (const CatalogEntry& entry : catalog()) {
     if (entry.genus > 12 || entry.vertices > 2) continue;
     const Built b = build(entry.name, options);
-    EXPECT_EQ(b.surface.stats.base, entry.vertices == 1 ? "bouquet" : "dipole") << entry.name;
+    EXPECT_EQ(b.surface.stats.base, entry.vertices == 1 ? "bouquet" : "spine") << entry.name;
     EXPECT_EQ(b.surface.stats.self_intersections, 0u) << entry.name;
     ++maps;
   }
   EXPECT_GT(maps, 50u);
+}
+
+// The spine placement keeps every two tubes apart whatever the graph: all loopless edge graphs of
+// the catalog up to genus 8, coarse tubes.
+TEST(RegmapSurface, SpineKeepsEveryTubeApart) {
+  TubeOptions tube;
+  tube.smoothness = 3;
+  std::size_t maps = 0;
+  for (const CatalogEntry& entry : catalog()) {
+    if (entry.genus > 8) continue;
+    const FiniteGroup group = enumerate_group(presentation_of(entry), Limits());
+    const LineGraph line = build_line_graph(group, build_tiling(group));
+    const JunctionOrder order = junction_order(line.graph);
+    const TubeShape shape = tube_shape(tube, group.q);
+    const std::optional<SymmetricPlacement> spine = spine_placement(line.graph, order, shape);
+    if (!spine) continue;
+    const Mesh mesh = tubify(spine->embedded, line, order, shape, Limits().max_faces);
+    EXPECT_EQ(find_self_intersections(mesh).triangle_pairs, 0u) << entry.name;
+    ++maps;
+  }
+  EXPECT_GT(maps, 60u);
 }
 
 TEST(RegmapSurface, BaseOption) {

@@ -12,6 +12,7 @@
 #include "mesh/topology.h"
 #include "regmap/embedded_graph.h"
 #include "regmap/line_graph.h"
+#include "regmap/spine_base.h"
 #include "regmap/symmetric_base.h"
 #include "regmap/triangle_tiling.h"
 
@@ -50,6 +51,23 @@ Placement place_graph(const LineGraph& line, const JunctionOrder& order, Geometr
   relax.clearance = shape.clearance;
   placement.relaxation = relax_embedding(placement.embedded, line.graph, order, relax, progress);
   return placement;
+}
+
+// When the relaxed surface crosses itself, the spine placement (which never does) replaces it if
+// the graph has one and its surface crosses itself less.
+void try_spine(const LineGraph& line, const JunctionOrder& order, const TubeShape& shape,
+               const Limits& limits, const Progress& progress, Placement& chosen, Mesh& mesh,
+               std::size_t& self_intersections) {
+  std::optional<SymmetricPlacement> spine = spine_placement(line.graph, order, shape);
+  if (!spine) return;
+  Mesh other = tubify(spine->embedded, line, order, shape, limits.max_faces);
+  const std::size_t crossings = find_self_intersections(other, progress).triangle_pairs;
+  if (crossings >= self_intersections) return;
+  chosen.embedded = std::move(spine->embedded);
+  chosen.base = spine->name;
+  chosen.symmetries = std::move(spine->symmetries);
+  mesh = std::move(other);
+  self_intersections = crossings;
 }
 
 // Closed: every edge has two faces; oriented: they run along it in opposite directions.
@@ -110,24 +128,28 @@ RegularSurface build_regular_surface(const Presentation& presentation, const Fin
       place_graph(line, order, tiling.geometry(), shape, options, presentation.name, progress);
 
   RegularSurface surface;
+  Placement chosen = placement;
   progress.step("tubification", 0.0);
   surface.mesh = tubify(placement.embedded, line, order, shape, limits.max_faces);
   SurfaceStats& stats = surface.stats;
-  stats.base = placement.base;
+  if (options.find_self_intersections) {
+    stats.self_intersections = find_self_intersections(surface.mesh, progress).triangle_pairs;
+    stats.self_intersections_searched = true;
+    if (stats.self_intersections > 0 && options.base == SurfaceBase::Automatic)
+      try_spine(line, order, shape, limits, progress, chosen, surface.mesh,
+                stats.self_intersections);
+  }
+  stats.base = chosen.base;
   stats.relaxation = placement.relaxation;
   stats.junctions = line.graph.node_count;
   stats.tubes = line.graph.edge_count;
   stats.vertices = surface.mesh.vertex_count();
   stats.faces = surface.mesh.face_count();
   stats.tube_radius = shape.radius;
-  stats.symmetries = placement.symmetries.size();
-  const std::vector<bool> kept = keeps_vertex_set(surface.mesh, placement.symmetries);
+  stats.symmetries = chosen.symmetries.size();
+  const std::vector<bool> kept = keeps_vertex_set(surface.mesh, chosen.symmetries);
   stats.symmetries_verified = static_cast<std::size_t>(std::count(kept.begin(), kept.end(), true));
   check_surface(surface.mesh, presentation, group.order(), surface);
-  if (options.find_self_intersections) {
-    stats.self_intersections = find_self_intersections(surface.mesh, progress).triangle_pairs;
-    stats.self_intersections_searched = true;
-  }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return surface;
 }

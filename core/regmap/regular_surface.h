@@ -1,9 +1,11 @@
 // The regular surface of a map by targetless tubification (thesis Sec. 9.2-9.5): the map's edge
 // graph (Line(G) identified, Sec. 9.3) placed in space, either on a symmetric base (a double cover
 // of a Platonic solid, or one or two junctions: symmetric_base.h) or by the constrained relaxation
-// from the Jemisphere (relaxation.h), tubified (tubification.h), and checked: closed, oriented,
-// genus E - V + 1, 4E quarter tubes, the relations of A, B, C on the mesh (surface_group.h),
-// self-intersections, and the base's rotations on the mesh's vertices (mesh/symmetry.h).
+// from the Jemisphere (relaxation.h) — and, when the relaxed surface crosses itself, on the spine
+// (spine_base.h) if that crosses itself less — tubified (tubification.h), and checked: closed,
+// oriented, genus E - V + 1, 4E quarter tubes, the relations of A, B, C on the mesh
+// (surface_group.h), self-intersections, and the base's rotations on the mesh's vertices
+// (mesh/symmetry.h).
 //
 // In:  the map's presentation (for its relators) and its enumerated group.
 // Out: the mesh (face attribute "tile") and its figures as plain values.
@@ -29,7 +31,7 @@
 namespace tessera::regmap {
 
 enum class SurfaceBase {
-  Automatic,  // the symmetric base when the map has one, else the relaxation
+  Automatic,  // the symmetric base when the map has one, else the relaxation (or the spine)
   Platonic,   // the symmetric base (symmetric_base.h), or an InputError
   Relax,      // the relaxation from the Jemisphere
 };

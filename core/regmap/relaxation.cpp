@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <unordered_map>
 
 #include <Eigen/Geometry>
 
 #include "base/error.h"
+#include "regmap/tube_curve.h"
 
 namespace tessera::regmap {
 
@@ -24,6 +26,8 @@ constexpr int kContactRefresh = 4;   // steps between searches for tubes in cont
 // edge midpoints.
 struct Forces {
   std::vector<Vector3d> node_force, node_torque, midpoint_force;
+  // The stiffness of the contact springs pulling on each body, added to its own in the step.
+  std::vector<double> node_contact, midpoint_contact;
   double energy = 0.0;
 
   void on_star(const EmbeddedGraph& embedded, std::size_t node, const Vector3d& at,
@@ -116,30 +120,62 @@ void add_coulomb(const EmbeddedGraph& embedded, double charge, double node_charg
 
 // ---- Contact between tubes --------------------------------------------------------------------
 
-// A piece of a tube's centreline: segment 2d is dart d's [node, tip], rigid with its junction
-// (whose plate lies within twice the tube radius of these spokes), segment 2d + 1 its [tip,
-// midpoint].
-struct SegmentEnds {
-  Vector3d a, b;
+// The tubes as the relaxation sees them: each edge's centreline (tube_curve.h) sampled into short
+// segments, plus one spoke per dart from its node to its tube start (the junction's plate lies
+// within twice the tube radius of its spokes). A sample point of an edge's first arc moves with the
+// first dart's junction and the midpoint, weighted by the Bernstein weights of the arc's ends; of
+// its second arc, with the midpoint and the second junction.
+struct SamplePoint {
+  Vector3d p;
+  std::int32_t node = -1;  // the junction it moves with, with weight to_node
+  double to_node = 0.0;
+  std::int32_t edge = -1;  // the midpoint it moves with, with weight to_midpoint
+  double to_midpoint = 0.0;
 };
 
-SegmentEnds segment_ends(std::size_t segment, const EmbeddedGraph& embedded, const EdgeGraph& graph,
-                         const std::vector<DartPoints>& darts) {
-  const std::size_t d = segment / 2;
-  if (segment % 2 == 0)
-    return {embedded.node_position[static_cast<std::size_t>(graph.dart_node[d])], darts[d].tip};
-  return {darts[d].tip, embedded.edge_path[static_cast<std::size_t>(graph.dart_edge[d])][0]};
+struct Segment {
+  SamplePoint a, b;
+  std::int32_t edge = -1;  // -1 for a spoke
+  std::int32_t node = -1;  // a spoke's node, or the node at a curve segment's start (else -1)
+};
+
+constexpr int kSamplesPerArc = 4;
+
+std::vector<Segment> tube_segments(const EmbeddedGraph& embedded, const EdgeGraph& graph,
+                                   const JunctionOrder& order) {
+  std::vector<Segment> segments;
+  for (std::size_t d = 0; d < graph.dart_node.size(); ++d) {
+    const std::int32_t v = graph.dart_node[d];
+    const Vector3d& x = embedded.node_position[static_cast<std::size_t>(v)];
+    const Vector3d start =
+        x + embedded.reach * dart_direction(embedded, graph, order, static_cast<std::int32_t>(d));
+    segments.push_back({{x, v, 1.0, -1, 0.0}, {start, v, 1.0, -1, 0.0}, -1, v});
+  }
+  for (std::size_t e = 0; e < graph.edge_count; ++e) {
+    const std::vector<Bezier> arcs = edge_centreline(embedded, graph, order, e);
+    const auto edge = static_cast<std::int32_t>(e);
+    for (std::size_t k = 0; k < 2; ++k) {
+      const std::int32_t node = graph.dart_node[static_cast<std::size_t>(order.edge_darts[e][k])];
+      SamplePoint previous;
+      for (int i = 0; i <= kSamplesPerArc; ++i) {
+        const double t = static_cast<double>(i) / kSamplesPerArc;
+        const double near_start = (1 - t) * (1 - t) * (1 + 2 * t);  // b0 + b1 of the arc
+        const double to_node = k == 0 ? near_start : 1 - near_start;
+        const SamplePoint point{arcs[k].at(t), node, to_node, edge, 1 - to_node};
+        if (i > 0) segments.push_back({previous, point, edge, i == 1 && k == 0 ? node : -1});
+        if (i == kSamplesPerArc && k == 1) segments.back().node = node;
+        previous = point;
+      }
+    }
+  }
+  return segments;
 }
 
-// Segments that meet by construction are not in contact: the two halves of a dart, the spokes of
-// one junction, the outer pieces of one edge (they share the midpoint).
-bool adjacent(std::size_t s, std::size_t t, const EdgeGraph& graph) {
-  const std::size_t ds = s / 2, dt = t / 2;
-  if (ds == dt) return true;
-  const bool outer_s = s % 2 == 1, outer_t = t % 2 == 1;
-  if (!outer_s && !outer_t) return graph.dart_node[ds] == graph.dart_node[dt];
-  if (outer_s && outer_t) return graph.dart_edge[ds] == graph.dart_edge[dt];
-  return false;
+// Pieces that meet by construction are not in contact: two pieces of one edge, two spokes of one
+// junction, and the pieces at one junction's tube starts (spokes and first curve segments).
+bool adjacent(const Segment& s, const Segment& t) {
+  if (s.edge >= 0 && s.edge == t.edge) return true;
+  return s.node >= 0 && s.node == t.node;
 }
 
 // The closest points of segments [p0, p1] and [q0, q1], as parameters (s, t) in [0, 1]
@@ -166,16 +202,18 @@ std::array<double, 2> closest_parameters(const Vector3d& p0, const Vector3d& p1,
   return {s, t};
 }
 
-void push_segment(std::size_t segment, double at, const Vector3d& force, const SegmentEnds& ends,
-                  const EmbeddedGraph& embedded, const EdgeGraph& graph, Forces& f) {
-  const std::size_t d = segment / 2;
-  const auto node = static_cast<std::size_t>(graph.dart_node[d]);
-  if (segment % 2 == 0) {
-    f.on_star(embedded, node, ends.a + at * (ends.b - ends.a), force);
-    return;
+void push_point(const SamplePoint& point, const Vector3d& force, double stiffness,
+                const EmbeddedGraph& embedded, Forces& f) {
+  if (point.node >= 0 && point.to_node > 0.0) {
+    const auto node = static_cast<std::size_t>(point.node);
+    f.on_star(embedded, node, point.p, point.to_node * force);
+    f.node_contact[node] += point.to_node * stiffness;
   }
-  f.on_star(embedded, node, ends.a, (1.0 - at) * force);
-  f.midpoint_force[static_cast<std::size_t>(graph.dart_edge[d])] += at * force;
+  if (point.edge >= 0 && point.to_midpoint > 0.0) {
+    const auto edge = static_cast<std::size_t>(point.edge);
+    f.midpoint_force[edge] += point.to_midpoint * force;
+    f.midpoint_contact[edge] += point.to_midpoint * stiffness;
+  }
 }
 
 using CellKey = std::uint64_t;
@@ -193,20 +231,17 @@ using SegmentPair = std::array<std::uint32_t, 2>;
 
 // The pairs of non-adjacent segments whose boxes, grown by `radius`, overlap: found through a
 // uniform grid with cells as large as the average box.
-std::vector<SegmentPair> contact_candidates(const EmbeddedGraph& embedded, const EdgeGraph& graph,
-                                            const std::vector<DartPoints>& darts, double radius) {
-  const std::size_t count = 2 * darts.size();
+std::vector<SegmentPair> contact_candidates(const std::vector<Segment>& segments, double radius) {
   std::vector<std::array<Vector3d, 2>> boxes;
   double extent = 0.0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const SegmentEnds e = segment_ends(i, embedded, graph, darts);
+  for (const Segment& s : segments) {
     boxes.push_back(
-        {e.a.cwiseMin(e.b).array() - radius / 2, e.a.cwiseMax(e.b).array() + radius / 2});
+        {s.a.p.cwiseMin(s.b.p).array() - radius / 2, s.a.p.cwiseMax(s.b.p).array() + radius / 2});
     extent += (boxes.back()[1] - boxes.back()[0]).maxCoeff();
   }
-  const double cell = std::max(radius, extent / static_cast<double>(count));
+  const double cell = std::max(radius, extent / static_cast<double>(segments.size()));
   std::unordered_map<CellKey, std::vector<std::uint32_t>> cells;
-  for (std::uint32_t i = 0; i < count; ++i) {
+  for (std::uint32_t i = 0; i < segments.size(); ++i) {
     const Vector3d first = (boxes[i][0] / cell).array().floor();
     const Vector3d last = (boxes[i][1] / cell).array().floor();
     for (double x = first.x(); x <= last.x(); ++x)
@@ -219,11 +254,11 @@ std::vector<SegmentPair> contact_candidates(const EmbeddedGraph& embedded, const
     for (std::size_t m = 0; m < list.size(); ++m) {
       for (std::size_t n = m + 1; n < list.size(); ++n) {
         const std::uint32_t i = list[m], j = list[n];
-        const Vector3d lo = boxes[i][0].cwiseMax(boxes[j][0]),
-                       hi = boxes[i][1].cwiseMin(boxes[j][1]);
+        const Vector3d lo = boxes[i][0].cwiseMax(boxes[j][0]);
+        const Vector3d hi = boxes[i][1].cwiseMin(boxes[j][1]);
         // Each pair once: in the cell where the overlap of the boxes begins.
         if ((lo.array() > hi.array()).any() || cell_key(lo, cell) != key) continue;
-        if (!adjacent(i, j, graph)) pairs.push_back({std::min(i, j), std::max(i, j)});
+        if (!adjacent(segments[i], segments[j])) pairs.push_back({std::min(i, j), std::max(i, j)});
       }
     }
   }
@@ -232,22 +267,37 @@ std::vector<SegmentPair> contact_candidates(const EmbeddedGraph& embedded, const
 }
 
 // A linear penalty spring between the segments of every candidate pair closer than `clearance`.
-void add_contacts(const EmbeddedGraph& embedded, const EdgeGraph& graph,
-                  const std::vector<DartPoints>& darts, const std::vector<SegmentPair>& pairs,
-                  double clearance, double stiffness, Forces& f) {
+void add_contacts(const EmbeddedGraph& embedded, const std::vector<Segment>& segments,
+                  const std::vector<SegmentPair>& pairs, double clearance, double stiffness,
+                  Forces& f) {
   for (const auto& [i, j] : pairs) {
-    const SegmentEnds a = segment_ends(i, embedded, graph, darts);
-    const SegmentEnds b = segment_ends(j, embedded, graph, darts);
-    const auto [s, t] = closest_parameters(a.a, a.b, b.a, b.b);
-    const Vector3d apart = (a.a + s * (a.b - a.a)) - (b.a + t * (b.b - b.a));
+    const Segment& a = segments[i];
+    const Segment& b = segments[j];
+    const auto [s, t] = closest_parameters(a.a.p, a.b.p, b.a.p, b.b.p);
+    const Vector3d apart = (a.a.p + s * (a.b.p - a.a.p)) - (b.a.p + t * (b.b.p - b.a.p));
     const double distance = apart.norm();
     if (distance >= clearance || distance == 0.0) continue;
     const double overlap = clearance - distance;
     f.energy += 0.5 * stiffness * overlap * overlap;
     const Vector3d push = stiffness * overlap * apart / distance;
-    push_segment(i, s, push, a, embedded, graph, f);
-    push_segment(j, t, -push, b, embedded, graph, f);
+    push_point(a.a, (1 - s) * push, (1 - s) * stiffness, embedded, f);
+    push_point(a.b, s * push, s * stiffness, embedded, f);
+    push_point(b.a, -(1 - t) * push, (1 - t) * stiffness, embedded, f);
+    push_point(b.b, -t * push, t * stiffness, embedded, f);
   }
+}
+
+// How many candidate pairs of segments are closer than `distance`.
+std::size_t count_closer(const std::vector<Segment>& segments,
+                         const std::vector<SegmentPair>& pairs, double distance) {
+  std::size_t count = 0;
+  for (const auto& [i, j] : pairs) {
+    const Segment& a = segments[i];
+    const Segment& b = segments[j];
+    const auto [s, t] = closest_parameters(a.a.p, a.b.p, b.a.p, b.b.p);
+    count += ((a.a.p + s * (a.b.p - a.a.p)) - (b.a.p + t * (b.b.p - b.a.p))).norm() < distance;
+  }
+  return count;
 }
 
 Forces compute_forces(const EmbeddedGraph& embedded, const EdgeGraph& graph,
@@ -257,11 +307,13 @@ Forces compute_forces(const EmbeddedGraph& embedded, const EdgeGraph& graph,
   f.node_force.assign(graph.node_count, Vector3d::Zero());
   f.node_torque.assign(graph.node_count, Vector3d::Zero());
   f.midpoint_force.assign(graph.edge_count, Vector3d::Zero());
-  const std::vector<DartPoints> darts = dart_points(embedded, graph, order);
-  add_dart_springs(embedded, graph, darts, options.alignment, f);
+  f.node_contact.assign(graph.node_count, 0.0);
+  f.midpoint_contact.assign(graph.edge_count, 0.0);
+  add_dart_springs(embedded, graph, dart_points(embedded, graph, order), options.alignment, f);
   add_coulomb(embedded, options.charge, options.node_charge, f);
   if (contact_stiffness > 0.0)
-    add_contacts(embedded, graph, darts, contacts, options.clearance, contact_stiffness, f);
+    add_contacts(embedded, tube_segments(embedded, graph, order), contacts, options.clearance,
+                 contact_stiffness, f);
   return f;
 }
 
@@ -270,17 +322,19 @@ Vector3d capped(const Vector3d& v, double cap) {
   return n > cap ? Vector3d(v * (cap / n)) : v;
 }
 
-// One preconditioned gradient step: each body moves by step * force / stiffness, where a
-// junction's stiffness grows with its q springs and its lever arms. Returns the root mean square
-// of the motions.
+// One preconditioned (Jacobi) gradient step: each body moves by step * force / stiffness, where a
+// junction's stiffness grows with its q springs and its lever arms, and every body's with the
+// contact springs on it. Without the contacts in the stiffness, a stiff contact would make the
+// step overshoot and the iteration oscillate chaotically, so that rounding differences between
+// platforms grew into different surfaces. Returns the root mean square of the motions.
 double take_step(EmbeddedGraph& embedded, const Forces& f, int valence, double step) {
   const double arm = embedded.reach + embedded.arm + 1.0;
-  const double inertia = valence * arm * arm;
   double squared = 0.0;
   for (std::size_t v = 0; v < embedded.node_position.size(); ++v) {
-    const Vector3d move = capped(step * f.node_force[v] / valence, kMaxMove);
+    const double stiffness = valence + f.node_contact[v];
+    const Vector3d move = capped(step * f.node_force[v] / stiffness, kMaxMove);
     embedded.node_position[v] += move;
-    const Vector3d turn = capped(step * f.node_torque[v] / inertia, kMaxTurn);
+    const Vector3d turn = capped(step * f.node_torque[v] / (stiffness * arm * arm), kMaxTurn);
     if (turn.norm() > 0.0) {
       const Eigen::Matrix3d rotation =
           Eigen::AngleAxisd(turn.norm(), turn.normalized()).toRotationMatrix();
@@ -290,13 +344,31 @@ double take_step(EmbeddedGraph& embedded, const Forces& f, int valence, double s
     squared += move.squaredNorm();
   }
   for (std::size_t e = 0; e < embedded.edge_path.size(); ++e) {
-    const Vector3d move = capped(step * f.midpoint_force[e] / 2.0, kMaxMove);
+    const Vector3d move =
+        capped(step * f.midpoint_force[e] / (2.0 + f.midpoint_contact[e]), kMaxMove);
     embedded.edge_path[e][0] += move;
     squared += move.squaredNorm();
   }
   const double bodies =
       static_cast<double>(embedded.node_position.size() + embedded.edge_path.size());
   return std::sqrt(squared / bodies);
+}
+
+// A fixed displacement of every midpoint by up to kNudge in each coordinate, from an integer hash
+// of its edge. The Jemisphere start is symmetric, an unstable equilibrium of the forces: without
+// the nudge, the last bits of its coordinates (from the platform's sin, cos and cosh) would choose
+// the way out, and native and wasm builds would relax into different surfaces.
+void break_symmetry(EmbeddedGraph& embedded) {
+  constexpr double kNudge = 1e-3;
+  for (std::size_t e = 0; e < embedded.edge_path.size(); ++e) {
+    std::uint32_t x = static_cast<std::uint32_t>(e) * 2654435761u + 1u;
+    for (int k = 0; k < 3; ++k) {
+      x ^= x >> 13;
+      x *= 0x5bd1e995u;
+      x ^= x >> 15;
+      embedded.edge_path[e][0][k] += kNudge * (static_cast<double>(x % 2001) / 1000.0 - 1.0);
+    }
+  }
 }
 
 }  // namespace
@@ -320,6 +392,7 @@ RelaxReport relax_embedding(EmbeddedGraph& embedded, const EdgeGraph& graph,
                             const Progress& progress) {
   for (const std::vector<Vector3d>& path : embedded.edge_path)
     if (path.size() != 1) throw Error("the relaxation moves edge paths of one point, the midpoint");
+  break_symmetry(embedded);
   RelaxReport report;
   const int iterations = std::max(options.iterations, 0);
   const int contact_from = iterations / 2;
@@ -334,14 +407,31 @@ RelaxReport relax_embedding(EmbeddedGraph& embedded, const EdgeGraph& graph,
         it < contact_from ? 0.0
                           : options.contact * (it - contact_from + 1) / (iterations - contact_from);
     if (it >= contact_from && (it - contact_from) % kContactRefresh == 0)
-      contacts = contact_candidates(embedded, graph, dart_points(embedded, graph, order),
-                                    2.0 * options.clearance);
+      contacts = contact_candidates(tube_segments(embedded, graph, order), 2.0 * options.clearance);
     const Forces f = compute_forces(embedded, graph, order, options, contacts, contact);
     if (it == iterations - tail) energy_before_tail = f.energy;
     const double decay = 1.0 - 0.95 * it / iterations;
     report.rms_motion = take_step(embedded, f, order.valence, options.step * decay);
   }
-  report.iterations = iterations;
+  // Settling: while tubes still overlap (centrelines closer than 0.6 clearances, about 2.4 tube
+  // radii), more steps at full contact stiffness and a fifth of the first step, within a second
+  // fixed budget.
+  const double overlap = 0.6 * options.clearance;
+  int settled = 0;
+  for (; settled < options.settle_iterations; ++settled) {
+    if (settled % kContactRefresh == 0) {
+      const std::vector<Segment> segments = tube_segments(embedded, graph, order);
+      contacts = contact_candidates(segments, 2.0 * options.clearance);
+      if (count_closer(segments, contacts, overlap) == 0) break;
+      progress.step("relaxation", 1.0);
+    }
+    const Forces f = compute_forces(embedded, graph, order, options, contacts, options.contact);
+    take_step(embedded, f, order.valence, 0.2 * options.step);
+  }
+  const std::vector<Segment> segments = tube_segments(embedded, graph, order);
+  contacts = contact_candidates(segments, 2.0 * options.clearance);
+  report.overlaps = count_closer(segments, contacts, overlap);
+  report.iterations = iterations + settled;
   report.energy = compute_forces(embedded, graph, order, options, contacts, options.contact).energy;
   if (iterations > 0 && energy_before_tail != 0.0)
     report.energy_change =

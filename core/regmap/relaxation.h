@@ -17,14 +17,19 @@
 //     come closer than the clearance (found through a uniform grid), stiffening linearly: they
 //     push tubes that pass too close apart along their common perpendicular.
 // Junctions move and turn as rigid bodies (force and torque), midpoints as points, by gradient
-// descent with a step that decays linearly over a fixed number of iterations: deterministic, and
-// the same on every platform up to floating point.
+// descent preconditioned by each body's stiffness (its springs and the contacts on it) with a step
+// that decays linearly over a fixed number of iterations, then, while tubes still overlap, settle
+// with full contacts for at most a second fixed number. Deterministic; the symmetric start is left
+// by a fixed nudge of the midpoints, so that rounding differences between platforms (native, wasm)
+// do not decide the result.
 //
 // In:  an edge graph, its junction order, an embedding (e.g. the Jemisphere one) whose edge paths
 //      are single midpoints.
 // Out: the embedding moved in place; a report with the convergence measures.
 // Throws CancelledError through `progress`; Error for a path of more than one point.
 #pragma once
+
+#include <cstddef>
 
 #include "base/progress.h"
 #include "regmap/embedded_graph.h"
@@ -33,20 +38,22 @@ namespace tessera::regmap {
 
 struct RelaxOptions {
   int iterations = 400;
-  double charge = 0.15;      // Coulomb constant (the springs have stiffness 1)
-  double node_charge = 3.0;  // a junction's charge, in midpoint charges
-  double alignment = 0.3;    // stiffness of the alignment springs
-  double contact = 20.0;     // final stiffness of the contact springs between tubes
-  double clearance = 0.6;    // distance below which two tubes' centrelines are in contact
-  double step = 0.4;         // the first step; it decays linearly to a twentieth of it
+  int settle_iterations = 400;  // at most this many more while tubes overlap
+  double charge = 0.15;         // Coulomb constant (the springs have stiffness 1)
+  double node_charge = 8.0;     // a junction's charge, in midpoint charges
+  double alignment = 1.0;       // stiffness of the alignment springs
+  double contact = 200.0;       // final stiffness of the contact springs between tubes
+  double clearance = 0.6;       // distance below which two tubes' centrelines are in contact
+  double step = 0.4;            // the first step; it decays linearly to a twentieth of it
 };
 
 struct RelaxReport {
-  int iterations = 0;
+  int iterations = 0;           // with the settling steps
   double energy = 0.0;          // at the end
-  double energy_change = 0.0;   // relative change over the last tenth of the iterations
-  double rms_motion = 0.0;      // root mean square of the last step's motions (node, midpoint)
+  double energy_change = 0.0;   // relative change over the last tenth of the main iterations
+  double rms_motion = 0.0;      // root mean square of the last main step's motions
   double max_dart_angle = 0.0;  // largest angle (radians) between a dart and its tube's chord
+  std::size_t overlaps = 0;     // pieces of tubes still closer than 0.6 clearances
 };
 
 RelaxReport relax_embedding(EmbeddedGraph& embedded, const EdgeGraph& graph,

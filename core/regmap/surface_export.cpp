@@ -30,7 +30,8 @@ nlohmann::ordered_json surface_stats_json(const SurfaceStats& s) {
             {"energy", r.energy},
             {"energy_change", r.energy_change},
             {"rms_motion", r.rms_motion},
-            {"max_dart_angle", r.max_dart_angle}}}};
+            {"max_dart_angle", r.max_dart_angle},
+            {"overlaps", r.overlaps}}}};
 }
 
 Color quarter_tube_color(std::int32_t tile) {

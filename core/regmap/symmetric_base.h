@@ -1,6 +1,6 @@
-// Symmetric placements of an edge graph (thesis Sec. 9.6): instead of the relaxation, a placement
-// built from a symmetric model when the map has one — a double cover of a Platonic solid
-// (platonic_base.h), or one or two junctions (hosohedral_base.h).
+// Placements of an edge graph built from a model instead of relaxed (thesis Sec. 9.6): a double
+// cover of a Platonic solid (platonic_base.h), one junction (bouquet_base.h), two junctions on a
+// spine (spine_base.h). Each keeps every two tubes apart by construction.
 #pragma once
 
 #include <optional>
@@ -15,12 +15,13 @@
 namespace tessera::regmap {
 
 struct SymmetricPlacement {
-  std::string name;  // "2-Octahedron", "bouquet", "dipole", ...
+  std::string name;  // "2-Octahedron", "bouquet", "spine", ...
   EmbeddedGraph embedded;
   std::vector<Eigen::Matrix3d> symmetries;  // rotations about the origin that map it to itself
 };
 
-// The Platonic base if one fits, else the hosohedral one, else nothing.
+// The Platonic base if one fits, else the bouquet for one junction, the spine for two, else
+// nothing.
 std::optional<SymmetricPlacement> symmetric_placement(const EdgeGraph& graph,
                                                       const JunctionOrder& order,
                                                       const TubeShape& shape);

@@ -10,6 +10,7 @@
 
 #include "base/error.h"
 #include "base/limits.h"
+#include "regmap/tube_curve.h"
 
 namespace tessera::regmap {
 
@@ -62,52 +63,6 @@ struct Ring {
   Vector3d left() const { return up.cross(tangent); }
 };
 
-struct Bezier {
-  std::array<Vector3d, 4> p;
-  Vector3d at(double t) const {
-    const double s = 1 - t;
-    return s * s * s * p[0] + 3 * s * s * t * p[1] + 3 * s * t * t * p[2] + t * t * t * p[3];
-  }
-  Vector3d derivative(double t) const {
-    const double s = 1 - t;
-    return 3 * s * s * (p[1] - p[0]) + 6 * s * t * (p[2] - p[1]) + 3 * t * t * (p[3] - p[2]);
-  }
-};
-
-Vector3d direction_or(const Vector3d& v, const Vector3d& fallback) {
-  return v.norm() > 1e-12 ? Vector3d(v.normalized()) : fallback;
-}
-
-// The centreline of an edge's tube: a C1 chain of cubic Bezier arcs through the knots (A's tube
-// start, the edge's waypoints, B's tube start). It leaves A along a and arrives at B against b,
-// with the junction's arm as control arm (less on a shorter first chord); at a waypoint its
-// tangent is the direction between the neighbouring knots, with arms of 0.4 of the chords (for a
-// loop whose darts are opposite, the tangent at the midpoint is parallel to them).
-std::vector<Bezier> centreline(const Vector3d& start, const Vector3d& a,
-                               const std::vector<Vector3d>& path, const Vector3d& end,
-                               const Vector3d& b, double arm) {
-  constexpr double kHandle = 0.4;
-  std::vector<Vector3d> knots = {start};
-  knots.insert(knots.end(), path.begin(), path.end());
-  knots.push_back(end);
-  const std::size_t last = knots.size() - 1;
-  std::vector<Vector3d> tangent(knots.size());
-  tangent.front() = a;
-  tangent.back() = -b;
-  for (std::size_t i = 1; i < last; ++i)
-    tangent[i] =
-        direction_or(knots[i + 1] - knots[i - 1], direction_or(knots[i + 1] - knots[i], a));
-  std::vector<Bezier> arcs;
-  for (std::size_t i = 0; i < last; ++i) {
-    const double chord = (knots[i + 1] - knots[i]).norm();
-    const double out = i == 0 ? std::min(arm, chord) : kHandle * chord;
-    const double in = i + 1 == last ? std::min(arm, chord) : kHandle * chord;
-    arcs.push_back(Bezier{
-        {knots[i], knots[i] + out * tangent[i], knots[i + 1] - in * tangent[i + 1], knots[i + 1]}});
-  }
-  return arcs;
-}
-
 // Sec. 9.4, Fig. 9.11: "the normals along each segment are interpolated from the junctions".
 // A rotation-minimizing frame (double reflection) carries A's normal along the curve; the twist it
 // is off B's normal by at the end is spread over the arc length.
@@ -149,8 +104,7 @@ void sample_arcs(const std::vector<Bezier>& arcs, std::size_t first, std::size_t
       const double t = static_cast<double>(i) / kFineSteps;
       points.push_back(arcs[k].at(t));
       const Vector3d chord = arcs[k].p[3] - arcs[k].p[0];
-      tangents.push_back(
-          direction_or(arcs[k].derivative(t), direction_or(chord, Vector3d::UnitX())));
+      tangents.push_back(unit_or(arcs[k].derivative(t), unit_or(chord, Vector3d::UnitX())));
     }
   }
 }
@@ -187,11 +141,8 @@ std::vector<Ring> edge_rings(const EmbeddedGraph& embedded, const EdgeGraph& gra
   const auto node_b = static_cast<std::size_t>(graph.dart_node[static_cast<std::size_t>(dart_b)]);
   const Vector3d a = dart_direction(embedded, graph, order, dart_a);
   const Vector3d b = dart_direction(embedded, graph, order, dart_b);
-  const std::vector<Vector3d>& path = embedded.edge_path[edge];
-  const std::vector<Bezier> arcs =
-      centreline(embedded.node_position[node_a] + embedded.reach * a, a, path,
-                 embedded.node_position[node_b] + embedded.reach * b, b, embedded.arm);
-  const std::size_t middle_arc = (path.size() + 1) / 2;  // the first arc of B's half
+  const std::vector<Bezier> arcs = edge_centreline(embedded, graph, order, edge);
+  const std::size_t middle_arc = first_half_arcs(embedded.edge_path[edge].size());
   std::vector<Vector3d> points, tangents;
   sample_arcs(arcs, 0, middle_arc, points, tangents);
   const std::size_t middle = points.size() - 1;
