@@ -1,5 +1,6 @@
 #include "regmap/line_graph.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "base/error.h"
@@ -21,19 +22,28 @@ Vec3 lift(Geometry geometry, const Point& z) {
 }
 
 // Sec. 9.3's identification: every class of segment ends takes the position of its copy nearest
-// the centre of the polygon.
+// the centre of the polygon. Copies related by a symmetry of the polygon (e.g. the two ends of a
+// pair of boundary sides) are equally near; their computed distances differ in the last bits, and
+// differently on each platform's sin, cos and cosh, so that a strict minimum would place the
+// native and wasm surfaces differently. Distances within kTie of the least count as equal, and the
+// first such copy in the tiling's (combinatorial) order is taken.
 std::vector<Vec3> identify(const TriangleTiling& tiling, const Orbits& classes, Corner corner) {
+  constexpr double kTie = 1e-9;
   const Geometry geometry = tiling.geometry();
-  std::vector<double> best(classes.count, std::numeric_limits<double>::infinity());
-  std::vector<Vec3> position(classes.count);
+  std::vector<double> distances(tiling.size());
+  std::vector<double> least(classes.count, std::numeric_limits<double>::infinity());
   for (std::size_t g = 0; g < tiling.size(); ++g) {
     const auto c = static_cast<std::size_t>(classes.label[g]);
-    const Point& z = tiling.corners[g][corner];
-    const double d = distance(geometry, Point{}, z);
-    if (d < best[c]) {
-      best[c] = d;
-      position[c] = lift(geometry, z);
-    }
+    distances[g] = distance(geometry, Point{}, tiling.corners[g][corner]);
+    least[c] = std::min(least[c], distances[g]);
+  }
+  std::vector<Vec3> position(classes.count);
+  std::vector<bool> placed(classes.count, false);
+  for (std::size_t g = 0; g < tiling.size(); ++g) {
+    const auto c = static_cast<std::size_t>(classes.label[g]);
+    if (placed[c] || distances[g] > least[c] + kTie) continue;
+    position[c] = lift(geometry, tiling.corners[g][corner]);
+    placed[c] = true;
   }
   return position;
 }

@@ -1,6 +1,8 @@
 #include "regmap/triangle_tiling.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <queue>
 
@@ -30,9 +32,15 @@ std::array<Corner, 2> side_corners(Side side) {
 namespace {
 
 // A face waiting to be placed: entered through `entry`, the neighbour across an N O side of the
-// placed triangle `from`; ordered by the distance of its centre from the origin.
+// placed triangle `from`; ordered by the distance of its centre from the origin, then by `entry`.
+// Faces related by a symmetry of the tiling are equally far in exact arithmetic, but their
+// computed distances differ in the last bits, and differently with each platform's sin, cos and
+// cosh: the distance is compared in steps of kDistanceStep, so that such ties go by `entry` and the
+// native and wasm builds grow the same polygon.
+constexpr double kDistanceStep = 1e-9;
+
 struct Candidate {
-  double distance;
+  std::int64_t distance;  // in steps of kDistanceStep
   Element entry;
   Element from;
   bool operator>(const Candidate& other) const {
@@ -119,7 +127,7 @@ class TilingBuilder {
     const Isometry there =
         compose(geometry, tiling_.placement[static_cast<std::size_t>(g)], reflection(Side::NO));
     const Point centre = apply(geometry, there, tiling_.base.corners[kM]);
-    candidates_.push({distance(geometry, Point{}, centre), h, g});
+    candidates_.push({std::llround(distance(geometry, Point{}, centre) / kDistanceStep), h, g});
   }
 
   void grow_faces() {
