@@ -69,13 +69,13 @@ test('the regular surface of R2.4 is a closed genus-5 surface of 20 quarter tube
   assert.throws(() => tessera.regmapSurface('R2.4', { base: 'hexagonal' }, undefined), (e) => e.kind === 'input');
 });
 
-test('native and wasm build the same regular surface', () => {
+test('native and wasm build the same regular surface: bouquet, spine, 2-Octahedron, relaxation', () => {
   const cli = path.resolve(here, '../../build/native/cli/tessera');
-  for (const name of ['R2.4', 'R3.1']) {
+  for (const name of ['R2.4', 'R2.5', "R3.4'", 'R3.1']) {
     const wasm = tessera.regmapSurface(name, {}, undefined).stats;
     const native = JSON.parse(execFileSync(cli, ['regmap', 'surface', name, '--json'], { encoding: 'utf8' }));
-    // Self-intersection counts are left out: touching triangles make them sensitive to rounding.
-    for (const key of ['genus', 'quarter_tubes', 'vertices', 'faces', 'base', 'relations_hold'])
+    for (const key of ['base', 'genus', 'closed', 'oriented', 'quarter_tubes', 'vertices', 'faces',
+      'relations_hold', 'self_intersections', 'symmetries_verified'])
       assert.deepEqual(wasm[key], native[key], `${name}.${key}`);
   }
 });
