@@ -2,6 +2,7 @@
 // parameterization, separatrices and the graph of the ports, program P1, the layout and its check.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include "commands.h"
 #include "export/glb.h"
@@ -10,6 +11,9 @@
 #include "field_input.h"
 #include "layout/layout_json.h"
 #include "layout/layout_scene.h"
+#include "layout/p1.h"
+#include "matching/instance_json.h"
+#include "matching/instance_lp.h"
 #include "mesh_input.h"
 #include "param/seamless_param.h"
 
@@ -19,7 +23,8 @@ namespace {
 void print_layout_help() {
   std::printf(
       "usage: tessera layout <mesh> [--alpha 5] [--rho 10] [--h REL] [--field F] [-o layout.glb]\n"
-      "                      [--ply layout.ply] [--json] [field options] [options]\n\n"
+      "                      [--ply layout.ply] [--export-p1 DIR] [--json] [field options] "
+      "[options]\n\n"
       "Computes the quad layout of a triangle mesh as a minimum-weight perfect matching of the\n"
       "singularities' ports with conflict pairs (thesis Ch. 3-6): a cross field (or --field), its\n"
       "seamless parameterization, the separatrices grown from every port at unit speed, the edges\n"
@@ -34,6 +39,9 @@ void print_layout_help() {
       "  -o FILE.glb          the refined mesh coloured by patch with a per-face _PATCH\n"
       "                       attribute, the arcs as lines, the singularities as points\n"
       "  --ply FILE.ply       the refined mesh with an integer face property 'patch'\n"
+      "  --export-p1 DIR      program P1 of this run as DIR/<mesh>_a<alpha>.lp (CPLEX LP, read by\n"
+      "                       glpsol --lp and cbc) and DIR/<mesh>_a<alpha>.json (tessera solve);\n"
+      "                       written before P1 is solved\n"
       "  --json               one JSON object on stdout: singularities, graph_edges, conflicts,\n"
       "                       patches, angle_rsd (percent), valid, objective, seconds (per\n"
       "                       stage), and alpha, ports, virtual_ports, nodes, arcs,\n"
@@ -83,13 +91,27 @@ std::string layout_text(const nlohmann::ordered_json& json) {
   return result;
 }
 
+// Program P1 of the run (Ch. 5) as DIR/<mesh>_a<alpha>.{lp,json}, the instance files of issue 5,
+// so that the bench solves exactly what the layout solves.
+void export_p1(const std::string& dir, const std::string& mesh_path, const layout::PortGraph& graph,
+               double alpha) {
+  std::filesystem::create_directories(dir);
+  char suffix[32];
+  std::snprintf(suffix, sizeof suffix, "_a%g", alpha);
+  const std::filesystem::path stem =
+      std::filesystem::path(dir) / (std::filesystem::path(mesh_path).stem().string() + suffix);
+  const matching::MatchingProblem problem = layout::matching_problem(graph, alpha);
+  write_file_bytes(stem.string() + ".json", matching::write_instance_json(problem));
+  write_file_bytes(stem.string() + ".lp", matching::write_instance_lp(problem));
+}
+
 }  // namespace
 
 int layout_command(const Args& args) {
   std::set<std::string> values = mesh_input_options();
   values.merge(field_input_options());
-  values.insert({"--alpha", "--rho", "--h", "-o", "--ply", "--solver", "--max-trace-steps",
-                 "--max-trace-seconds", "--max-solve-seconds"});
+  values.insert({"--alpha", "--rho", "--h", "-o", "--ply", "--solver", "--export-p1",
+                 "--max-trace-steps", "--max-trace-seconds", "--max-solve-seconds"});
   const ParsedArgs parsed = parse_args(args, values, {"--json", "--help", "-h"}, "layout");
   if (parsed.has("--help") || parsed.has("-h")) {
     print_layout_help();
@@ -122,6 +144,8 @@ int layout_command(const Args& args) {
   const layout::Charts charts{mesh, connectivity, param};
   layout::LayoutGraph graph = layout::build_layout_graph(charts, options, progress);
   graph.seconds.insert(graph.seconds.begin(), {"field and param", param_seconds});
+  if (parsed.has("--export-p1"))
+    export_p1(parsed.value("--export-p1"), parsed.positional[0], graph.graph, alpha);
   const layout::QuadLayout result =
       layout::solve_layout(charts, graph, alpha, solver, options.limits, progress);
 

@@ -1,19 +1,23 @@
 // `tessera solve`: the JSON keys, every solver on both file forms, infeasible instances as answers,
-// bad input and usage as exit code 2.
+// bad input and usage as exit code 2; `tessera layout --export-p1` writes the instance it solves.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "cli_run.h"
+#include "export/writers.h"
 #include "matching/generate.h"
 #include "matching/instance_json.h"
 #include "matching/instance_lp.h"
+#include "mesh/shapes.h"
 #include "mesh_test_util.h"
 
 namespace tessera::matching {
 namespace {
 
 using test::run_cli;
+using test::temp_path;
 using test::write_temp_file;
 
 MatchingProblem instance() {
@@ -79,6 +83,21 @@ TEST(CliSolve, BadInputAndUsageExitWithTwo) {
   EXPECT_EQ(run_cli("solve").exit_code, 2);
   EXPECT_EQ(run_cli("solve /no/such/file.json").exit_code, 2);
   EXPECT_EQ(run_cli("solve --help").exit_code, 0);
+}
+
+TEST(CliLayout, ExportsTheP1InstanceItSolves) {
+  const std::string mesh = write_temp_file("sphere.obj", write_obj(icosphere(3)));
+  const std::string dir = temp_path("p1-export");
+  const auto layout = run_cli("layout --json '" + mesh + "' --alpha 1 --export-p1 '" + dir + "'");
+  ASSERT_EQ(layout.exit_code, 0) << layout.out;
+  const nlohmann::json json = nlohmann::json::parse(layout.out);
+  const std::string stem = dir + "/" + std::filesystem::path(mesh).stem().string() + "_a1";
+  for (const char* extension : {".json", ".lp"}) {
+    const nlohmann::json r = solve_json("'" + stem + extension + "'");
+    EXPECT_EQ(r["status"], "optimal") << extension;
+    EXPECT_EQ(r["instance"]["edges"], json["graph_edges"]) << extension;
+    EXPECT_NEAR(r["objective"].get<double>(), json["objective"].get<double>(), 1e-9) << extension;
+  }
 }
 
 }  // namespace
