@@ -23,16 +23,25 @@ bool Adjacency::contains(std::uint32_t i, std::uint32_t j) const {
   return std::binary_search(list.begin(), list.end(), j);
 }
 
+// Bucketed by the first index (a counting sort), then each list sorted and made unique: linear in
+// the pairs but for the short per-index sorts.
 Adjacency adjacency_from_pairs(std::size_t n,
-                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+                               const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+  std::vector<std::uint32_t> start(n + 1, 0);
+  for (const auto& [a, b] : pairs) ++start[a + 1];
+  for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+  std::vector<std::uint32_t> list(pairs.size());
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (const auto& [a, b] : pairs) list[fill[a]++] = b;
   Adjacency adj;
   adj.start.assign(n + 1, 0);
-  for (const auto& [a, b] : pairs) ++adj.start[a + 1];
-  for (std::size_t i = 0; i < n; ++i) adj.start[i + 1] += adj.start[i];
-  adj.list.reserve(pairs.size());
-  for (const auto& [a, b] : pairs) adj.list.push_back(b);
+  adj.list.reserve(list.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto first = list.begin() + start[i], last = list.begin() + start[i + 1];
+    std::sort(first, last);
+    adj.list.insert(adj.list.end(), first, std::unique(first, last));
+    adj.start[i + 1] = static_cast<std::uint32_t>(adj.list.size());
+  }
   return adj;
 }
 

@@ -23,9 +23,9 @@ struct Adjacency {
   bool contains(std::uint32_t i, std::uint32_t j) const;
 };
 
-// From (i, j) pairs over n indices; duplicates are dropped. The pairs are sorted in place.
+// From (i, j) pairs over n indices; duplicates are dropped.
 Adjacency adjacency_from_pairs(std::size_t n,
-                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
+                               const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
 
 // Per node, the edges at it.
 Adjacency incident_edges(const MatchingProblem& problem);

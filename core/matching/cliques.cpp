@@ -16,14 +16,36 @@ std::vector<std::uint32_t> intersect(std::span<const std::uint32_t> a,
   return out;
 }
 
+// Keeps the members of the sorted `kept` that are in the sorted `other`. Binary searches when
+// `kept` is much shorter (as candidates of a growing clique soon are), a merge otherwise.
+void keep_common(std::vector<std::uint32_t>& kept, std::span<const std::uint32_t> other) {
+  std::size_t out = 0;
+  if (8 * kept.size() < other.size()) {
+    for (std::uint32_t x : kept)
+      if (std::binary_search(other.begin(), other.end(), x)) kept[out++] = x;
+  } else {
+    auto it = other.begin();
+    for (std::uint32_t x : kept) {
+      while (it != other.end() && *it < x) ++it;
+      if (it != other.end() && *it == x) kept[out++] = x;
+    }
+  }
+  kept.resize(out);
+}
+
 class CliqueCover {
  public:
   CliqueCover(const Adjacency& exclusion, const Adjacency& pairs)
-      : exclusion_(exclusion), conflicts_(pairs), covered_(conflicts_.list.size(), 0) {}
+      : exclusion_(exclusion),
+        conflicts_(pairs),
+        covered_(conflicts_.list.size(), 0),
+        links_(conflicts_.size(), 0),
+        stamp_(conflicts_.size(), 0),
+        member_(conflicts_.size(), 0) {}
 
   std::vector<Clique> run() {
     std::vector<Clique> cliques;
-    const auto m = static_cast<std::uint32_t>(conflicts_.start.size() - 1);
+    const auto m = static_cast<std::uint32_t>(conflicts_.size());
     for (std::uint32_t e = 0; e < m; ++e) {
       for (std::uint32_t k = conflicts_.start[e]; k < conflicts_.start[e + 1]; ++k) {
         if (covered_[k]) continue;
@@ -36,56 +58,61 @@ class CliqueCover {
   }
 
  private:
-  // Position of the conflict (a, b) in conflicts_.list, or npos.
-  std::size_t conflict_slot(std::uint32_t a, std::uint32_t b) const {
-    const auto list = conflicts_.of(a);
-    const auto it = std::lower_bound(list.begin(), list.end(), b);
-    if (it == list.end() || *it != b) return npos;
-    return conflicts_.start[a] + static_cast<std::size_t>(it - list.begin());
-  }
-
-  std::size_t uncovered_links(std::uint32_t c, const Clique& clique) const {
-    std::size_t links = 0;
-    for (std::uint32_t member : clique) {
-      const std::size_t slot = conflict_slot(c, member);
-      links += slot != npos && !covered_[slot];
+  // links_[c] += 1 for every conflict pair (member, c) not covered yet; a count is valid only
+  // while stamp_[c] is the current clique's stamp (so that nothing needs clearing).
+  void count_links(std::uint32_t member) {
+    for (std::uint32_t k = conflicts_.start[member]; k < conflicts_.start[member + 1]; ++k) {
+      if (covered_[k]) continue;
+      const std::uint32_t c = conflicts_.list[k];
+      if (stamp_[c] != clique_count_) {
+        stamp_[c] = clique_count_;
+        links_[c] = 0;
+      }
+      ++links_[c];
     }
-    return links;
   }
 
-  // Extends {a, b} by common neighbours, preferring those that cover the most new conflict pairs.
-  Clique grow(std::uint32_t a, std::uint32_t b) const {
+  std::uint32_t links(std::uint32_t c) const { return stamp_[c] == clique_count_ ? links_[c] : 0; }
+
+  // Extends {a, b} by common neighbours, preferring those that cover the most new conflict pairs
+  // (counted as the clique grows, so that a step costs O(candidates + degree)).
+  Clique grow(std::uint32_t a, std::uint32_t b) {
+    ++clique_count_;
     Clique clique = {a, b};
+    count_links(a);
+    count_links(b);
     std::vector<std::uint32_t> candidates = intersect(exclusion_.of(a), exclusion_.of(b));
     while (!candidates.empty()) {
       std::uint32_t best = candidates.front();
-      std::size_t best_links = 0;
-      for (std::uint32_t c : candidates) {
-        const std::size_t links = uncovered_links(c, clique);
-        if (links > best_links) {
+      std::uint32_t best_links = links(best);
+      for (std::uint32_t c : candidates)
+        if (links(c) > best_links) {
           best = c;
-          best_links = links;
+          best_links = links(c);
         }
-      }
       clique.push_back(best);
-      candidates = intersect(candidates, exclusion_.of(best));
+      count_links(best);
+      keep_common(candidates, exclusion_.of(best));
     }
     std::sort(clique.begin(), clique.end());
     return clique;
   }
 
   void mark_covered(const Clique& clique) {
-    for (std::uint32_t a : clique)
-      for (std::uint32_t b : clique) {
-        const std::size_t slot = a == b ? npos : conflict_slot(a, b);
-        if (slot != npos) covered_[slot] = 1;
-      }
+    for (std::uint32_t e : clique) member_[e] = 1;
+    for (std::uint32_t e : clique)
+      for (std::uint32_t k = conflicts_.start[e]; k < conflicts_.start[e + 1]; ++k)
+        if (member_[conflicts_.list[k]]) covered_[k] = 1;
+    for (std::uint32_t e : clique) member_[e] = 0;
   }
 
-  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   const Adjacency& exclusion_;
   const Adjacency& conflicts_;
   std::vector<std::uint8_t> covered_;  // per entry of conflicts_.list
+  std::vector<std::uint32_t> links_;   // per edge, during grow()
+  std::vector<std::uint32_t> stamp_;   // per edge: the clique its links_ entry counts for
+  std::uint32_t clique_count_ = 0;
+  std::vector<std::uint8_t> member_;  // per edge, during mark_covered()
 };
 
 // Grows a clique from `seed` by the candidate of largest x, then makes it maximal.
@@ -100,7 +127,7 @@ Clique heaviest_clique_from(std::uint32_t seed, const Adjacency& exclusion,
         [&](std::uint32_t a, std::uint32_t b) { return x[a] < x[b] || (x[a] == x[b] && a > b); });
     const std::uint32_t chosen = *best;
     clique.push_back(chosen);
-    candidates = intersect(candidates, exclusion.of(chosen));
+    keep_common(candidates, exclusion.of(chosen));
   }
   std::sort(clique.begin(), clique.end());
   return clique;

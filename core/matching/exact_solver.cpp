@@ -109,19 +109,19 @@ MatchingResult solve_component(const MatchingProblem& problem, Clock::time_point
   std::vector<std::uint32_t> unmatchable = deficient_ports(problem, all);
   if (!unmatchable.empty()) return infeasible(std::move(unmatchable));
   const Adjacency conflicts = conflicting_edges(problem);
-  const Adjacency exclusive = exclusive_edges(problem);
-  const Probing probing = probe(problem, incident, exclusive);
-  if (probing.infeasible) return infeasible();
-  std::vector<std::uint8_t> allowed(problem.edges.size(), 1);
-  for (std::size_t e = 0; e < allowed.size(); ++e) allowed[e] = probing.edges[e] != Fixed::zero;
-
+  // The cheapest matching without conflict constraints (Sec. 5.1): optimal when conflict-free,
+  // a lower bound otherwise.
   std::vector<double> weights(problem.edges.size());
   for (std::size_t e = 0; e < weights.size(); ++e) weights[e] = problem.edges[e].weight;
-  const PortCover unconstrained = min_weight_port_cover(problem, weights, allowed);
+  const PortCover unconstrained = min_weight_port_cover(problem, weights, all);
   if (!unconstrained.exists) return infeasible();
   if (conflict_free(conflicts, unconstrained.edges, problem.edges.size()))
     return optimal(problem, unconstrained.edges);
   const double cover_bound = objective_of(problem, unconstrained.edges);
+
+  const Adjacency exclusive = exclusive_edges(problem);
+  const Probing probing = probe(problem, incident, exclusive);
+  if (probing.infeasible) return infeasible();
 
   // The exclusion graph with the implied exclusions of probing: larger cliques, stronger rows.
   const Adjacency exclusion = with_pairs(exclusive, probing.implied);

@@ -3,9 +3,9 @@
 //  1. Independent components (components.h) are solved one by one.
 //  2. Feasibility: the blossom algorithm decides whether any matching covers every port; if not,
 //     P1 is infeasible and the Gallai-Edmonds set D names the ports at fault (blossom.h).
-//  3. Probing fixes edges that no feasible matching can hold, or that every one must (probing.h).
-//  4. The cheapest matching without conflict constraints bounds P1 from below; when it is
+//  3. The cheapest matching without conflict constraints bounds P1 from below; when it is
 //     conflict-free it is optimal and the search ends here.
+//  4. Probing fixes edges that no feasible matching can hold, or that every one must (probing.h).
 //  5. The LP relaxation with clique rows and odd-set rows (lp_relaxation.h) gives the root bound
 //     and the clique multipliers that price conflicts for the Lagrangian repair (incumbent.h).
 //  6. LP-based branch-and-bound with reduced-cost fixing closes the gap (branch_and_bound.h).

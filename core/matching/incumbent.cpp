@@ -36,7 +36,8 @@ IncumbentSearch::IncumbentSearch(const MatchingProblem& problem, const Adjacency
       conflicts_(conflicts),
       exclusive_(exclusive),
       fixed_(fixed),
-      allowed_(problem.edges.size(), 1) {
+      allowed_(problem.edges.size(), 1),
+      tolerance_(improvement_tolerance(problem)) {
   for (std::size_t e = 0; e < fixed.size(); ++e)
     if (fixed[e] == Fixed::zero) allowed_[e] = 0;
 }
@@ -201,7 +202,7 @@ bool IncumbentSearch::try_swap(std::uint32_t e, std::uint32_t f, std::vector<std
                                std::vector<std::int64_t>& edge_at) const {
   const MatchingEdge& x = problem_.edges[e];
   const MatchingEdge& y = problem_.edges[f];
-  const double before = x.weight + y.weight - improvement_tolerance(problem_);
+  const double before = x.weight + y.weight - tolerance_;
   chosen[e] = chosen[f] = 0;
   const std::uint32_t options[2][4] = {{x.u, y.u, x.v, y.v}, {x.u, y.v, x.v, y.u}};
   for (const auto& o : options) {
@@ -228,14 +229,13 @@ bool IncumbentSearch::try_swap(std::uint32_t e, std::uint32_t f, std::vector<std
 bool IncumbentSearch::try_replace(std::uint32_t e, std::vector<std::uint8_t>& chosen,
                                   std::vector<std::int64_t>& edge_at) const {
   const MatchingEdge& x = problem_.edges[e];
-  const double tolerance = improvement_tolerance(problem_);
   chosen[e] = 0;
-  if (problem_.is_virtual[x.u] && problem_.is_virtual[x.v] && x.weight > tolerance) {
+  if (problem_.is_virtual[x.u] && problem_.is_virtual[x.v] && x.weight > tolerance_) {
     edge_at[x.u] = edge_at[x.v] = -1;
     return true;
   }
   std::int64_t best = -1;
-  double best_weight = x.weight - tolerance;
+  double best_weight = x.weight - tolerance_;
   for (const auto& [keep, release] : {std::pair{x.u, x.v}, std::pair{x.v, x.u}}) {
     for (std::uint32_t f : incident_.of(keep)) {
       const MatchingEdge& y = problem_.edges[f];

@@ -67,6 +67,7 @@ class IncumbentSearch {
   const Adjacency& exclusive_;
   std::vector<Fixed> fixed_;
   std::vector<std::uint8_t> allowed_;
+  double tolerance_;  // an exchange must gain more than this (relative to the largest weight)
 };
 
 }  // namespace tessera::matching
