@@ -74,8 +74,8 @@ class CliqueCover {
 
   std::uint32_t links(std::uint32_t c) const { return stamp_[c] == clique_count_ ? links_[c] : 0; }
 
-  // Extends {a, b} by common neighbours, preferring those that cover the most new conflict pairs
-  // (counted as the clique grows, so that a step costs O(candidates + degree)).
+  // Extends {a, b} by the common neighbour that covers the most new conflict pairs while one covers
+  // any (counted as the clique grows, so that a step costs O(candidates + degree)).
   Clique grow(std::uint32_t a, std::uint32_t b) {
     ++clique_count_;
     Clique clique = {a, b};
@@ -90,6 +90,7 @@ class CliqueCover {
           best = c;
           best_links = links(c);
         }
+      if (best_links == 0) break;
       clique.push_back(best);
       count_links(best);
       keep_common(candidates, exclusion_.of(best));

@@ -16,8 +16,10 @@ namespace tessera::matching {
 
 using Clique = std::vector<std::uint32_t>;  // edge indices, increasing
 
-// Maximal cliques of the graph `exclusion`, found greedily, that together hold every pair of the
-// graph `pairs` (a subgraph of it; each clique holds at least one of its pairs). Deterministic.
+// Cliques of the graph `exclusion` that together hold every pair of the graph `pairs` (a subgraph
+// of it): each is grown greedily from an uncovered pair by the common neighbour that covers the
+// most uncovered pairs, while one covers any (not to maximality: the separation of violated
+// cliques extends them where the relaxation needs it). Deterministic.
 std::vector<Clique> clique_cover(const Adjacency& exclusion, const Adjacency& pairs);
 
 // clique_cover() of the conflict pairs in the exclusion graph of the problem (adjacency.h).

@@ -122,6 +122,7 @@ MatchingResult solve_component(const MatchingProblem& problem, Clock::time_point
   const Adjacency exclusive = exclusive_edges(problem);
   const Probing probing = probe(problem, incident, exclusive);
   if (probing.infeasible) return infeasible();
+  if (Clock::now() >= deadline) return stopped_at_root(cover_bound);
 
   // The exclusion graph with the implied exclusions of probing: larger cliques, stronger rows.
   const Adjacency exclusion = with_pairs(exclusive, probing.implied);

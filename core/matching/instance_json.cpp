@@ -96,12 +96,18 @@ class Reader {
       fail("version", "only version 1 is known; was the file written by a newer Tessera?");
   }
 
-  std::uint32_t index(const Json& value, std::size_t bound, const std::string& where,
+  // "list[i]", made only for a message (an instance has hundreds of thousands of items).
+  static std::string item_name(const char* list, std::size_t i) {
+    return std::string(list) + "[" + std::to_string(i) + "]";
+  }
+
+  // Item i of `list` holds `value`, an index below `bound`.
+  std::uint32_t index(const Json& value, std::size_t bound, const char* list, std::size_t i,
                       const char* what) const {
     if (!value.is_number_integer() || value.get<long long>() < 0 ||
         static_cast<unsigned long long>(value.get<long long>()) >= bound)
-      fail(where, std::string("expected ") + what + " index in [0, " + std::to_string(bound) +
-                      "), got " + value.dump());
+      fail(item_name(list, i), std::string("expected ") + what + " index in [0, " +
+                                   std::to_string(bound) + "), got " + value.dump());
     return static_cast<std::uint32_t>(value.get<long long>());
   }
 
@@ -123,23 +129,21 @@ class Reader {
 
   void read_virtual(const Json& list, MatchingProblem& problem) const {
     array(list, "virtual", limits_.max_matching_nodes, "--max-nodes");
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const std::string where = "virtual[" + std::to_string(i) + "]";
-      problem.is_virtual[index(list[i], problem.node_count(), where, "a node")] = 1;
-    }
+    for (std::size_t i = 0; i < list.size(); ++i)
+      problem.is_virtual[index(list[i], problem.node_count(), "virtual", i, "a node")] = 1;
   }
 
   void read_edges(const Json& list, MatchingProblem& problem) const {
     array(list, "edges", limits_.max_matching_edges, "--max-edges");
     problem.edges.reserve(list.size());
     for (std::size_t e = 0; e < list.size(); ++e) {
-      const std::string where = "edges[" + std::to_string(e) + "]";
       const Json& item = list[e];
       if (!item.is_array() || item.size() != 3 || !item[2].is_number())
-        fail(where, "expected [u, v, weight] with node indices u, v and a number weight");
+        fail(item_name("edges", e),
+             "expected [u, v, weight] with node indices u, v and a number weight");
       MatchingEdge edge;
-      edge.u = index(item[0], problem.node_count(), where, "a node");
-      edge.v = index(item[1], problem.node_count(), where, "a node");
+      edge.u = index(item[0], problem.node_count(), "edges", e, "a node");
+      edge.v = index(item[1], problem.node_count(), "edges", e, "a node");
       edge.weight = item[2].get<double>();
       problem.edges.push_back(edge);
     }
@@ -149,12 +153,12 @@ class Reader {
     array(list, "conflicts", limits_.max_matching_conflicts, "--max-conflicts");
     problem.conflicts.reserve(list.size());
     for (std::size_t k = 0; k < list.size(); ++k) {
-      const std::string where = "conflicts[" + std::to_string(k) + "]";
       const Json& item = list[k];
-      if (!item.is_array() || item.size() != 2) fail(where, "expected [e1, e2], two edge indices");
+      if (!item.is_array() || item.size() != 2)
+        fail(item_name("conflicts", k), "expected [e1, e2], two edge indices");
       ConflictPair pair;
-      pair.first = index(item[0], problem.edges.size(), where, "an edge");
-      pair.second = index(item[1], problem.edges.size(), where, "an edge");
+      pair.first = index(item[0], problem.edges.size(), "conflicts", k, "an edge");
+      pair.second = index(item[1], problem.edges.size(), "conflicts", k, "an edge");
       problem.conflicts.push_back(pair);
     }
   }

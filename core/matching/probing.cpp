@@ -5,7 +5,7 @@ namespace tessera::matching {
 namespace {
 
 // One pass over the free edges; true if an edge was fixed.
-bool probe_free_edges(Propagation& propagation, const Adjacency& exclusive, Probing& result) {
+bool probe_free_edges(Propagation& propagation, Probing& result) {
   bool changed = false;
   result.implied.clear();
   for (std::uint32_t e = 0; e < propagation.values().size() && !propagation.infeasible(); ++e) {
@@ -15,11 +15,12 @@ bool probe_free_edges(Propagation& propagation, const Adjacency& exclusive, Prob
       changed = true;
       continue;
     }
-    for (std::uint32_t f : propagation.dropped())
-      if (!exclusive.contains(e, f)) {
-        result.implied.emplace_back(e, f);
-        result.implied.emplace_back(f, e);
-      }
+    // The direct drops are e's exclusive edges; the rest are implied exclusions.
+    const std::vector<std::uint32_t>& dropped = propagation.dropped();
+    for (std::size_t k = propagation.direct_drops(); k < dropped.size(); ++k) {
+      result.implied.emplace_back(e, dropped[k]);
+      result.implied.emplace_back(dropped[k], e);
+    }
   }
   return changed;
 }
@@ -33,8 +34,7 @@ Probing probe(const MatchingProblem& problem, const Adjacency& incident,
   bool changed = true;
   while (changed && !propagation.infeasible()) {
     changed = propagation.force_single_edges();
-    if (!propagation.infeasible())
-      changed = probe_free_edges(propagation, exclusive, result) || changed;
+    if (!propagation.infeasible()) changed = probe_free_edges(propagation, result) || changed;
   }
   result.infeasible = propagation.infeasible();
   if (result.infeasible) result.implied.clear();

@@ -48,6 +48,7 @@ bool Propagation::try_one(std::uint32_t e) {
   forced_.clear();
   queue_.clear();
   if (values_[e] != Fixed::free || !force(e)) return false;
+  direct_drops_ = dropped_.size();
   for (std::size_t next = 0; next < queue_.size(); ++next) {
     const std::uint32_t p = queue_[next];
     if (problem_.is_virtual[p] || matched_[p] || covered_[p] == stamp_) continue;

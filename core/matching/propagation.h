@@ -27,8 +27,10 @@ class Propagation {
 
   // Tries x_e = 1 with all its consequences, without committing them; false on a contradiction.
   bool try_one(std::uint32_t e);
-  // The edges the last successful try_one() drove to 0.
+  // The edges the last successful try_one() drove to 0: first the free edges exclusive with e
+  // itself (direct_drops() of them), then those its forced edges excluded.
   const std::vector<std::uint32_t>& dropped() const { return dropped_; }
+  std::size_t direct_drops() const { return direct_drops_; }
   // Makes the consequences of the last successful try_one() permanent.
   void commit();
 
@@ -62,6 +64,7 @@ class Propagation {
   std::vector<std::uint32_t> covered_, zero_, one_;
   std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> dropped_, forced_, queue_;
+  std::size_t direct_drops_ = 0;
 };
 
 }  // namespace tessera::matching
