@@ -4,82 +4,131 @@
 # that every optimal objective agrees and prints a table with the speed-up of the exact solver
 # and the median ratios (bench/solvers_table.mjs).
 #
-#   bench/solvers.sh [instance-dir] [--time-limit S]
+#   bench/solvers.sh [--time-limit S] [--meshes DIR] [instance-dir]
 #
+# Without an instance directory, the instances are made first, into build/bench-p1:
+#   meshes/     program P1 of `tessera layout <mesh> --alpha A --export-p1` for every mesh of
+#               ../shared/meshes (or --meshes DIR) and A in 0, 1, 5, 20; a mesh whose layout
+#               stops before P1 (a limit, an error) is reported and has no instance;
+#   synthetic/  tessera_p1_instances (bench/p1_instances.cpp), shaped like thesis Appendix B.
 # An instance is a pair <name>.json / <name>.lp (tessera solve reads the JSON, glpsol and cbc the
-# LP form of the same program). Without a directory, synthetic instances are generated first into
-# build/bench-p1 by tessera_p1_instances (bench/p1_instances.cpp) and the table says so.
-# Times are CPU seconds (user + system) of each process, file reading included; wall seconds are
-# kept in the TSV written next to the instances (solvers.tsv).
+# LP form of the same program). Times are CPU seconds (user + system, 1 ms resolution) of each
+# process, start-up and file reading included; wall seconds are kept in the TSV (solvers.tsv).
+# glpsol or cbc missing: that column is skipped with a message (scripts/setup.sh installs both).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 tessera=${TESSERA:-$root/build/native/cli/tessera}
 generator=$root/build/native/bench/tessera_p1_instances
+meshes=$root/../shared/meshes
+alphas=(0 1 5 20)
 limit=60
 dir=""
 while [ $# -gt 0 ]; do
   case $1 in
     --time-limit) limit=$2; shift 2 ;;
-    --help|-h) sed -n 2,14p "$0"; exit 0 ;;
+    --meshes) meshes=$2; shift 2 ;;
+    --help|-h) sed -n 2,18p "$0"; exit 0 ;;
     *) dir=$1; shift ;;
   esac
 done
-for tool in "$tessera" glpsol cbc node /usr/bin/time; do
-  command -v "$tool" >/dev/null || { echo "solvers.sh: $tool is missing (build, or install glpk-utils, coinor-cbc)"; exit 2; }
+for tool in "$tessera" node; do
+  command -v "$tool" >/dev/null || { echo "solvers.sh: $tool is missing (build first)"; exit 2; }
 done
-synthetic=0
-if [ -z "$dir" ]; then
-  dir=$root/build/bench-p1
-  synthetic=1
-  [ -x "$generator" ] || { echo "solvers.sh: build tessera_p1_instances first"; exit 2; }
-  "$generator" "$dir" >/dev/null || exit 1
-fi
+tools=()
+for tool in glpsol cbc; do
+  if command -v "$tool" >/dev/null; then tools+=("$tool"); else
+    echo "solvers.sh: $tool is not installed, its column is skipped (scripts/setup.sh)" >&2
+  fi
+done
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-tsv=$dir/solvers.tsv
-printf 'instance\tedges\tconflicts\tsolver\tstatus\tobjective\tcpu\twall\n' > "$tsv"
 
-# Runs a command under /usr/bin/time; sets cpu and wall.
+# The P1 instances of every shared mesh's layout at each alpha; one line per mesh on stderr.
+make_mesh_instances() {
+  local out=$1 mesh name alpha
+  mkdir -p "$out"
+  for mesh in "$meshes"/*.obj "$meshes"/*.off; do
+    [ -f "$mesh" ] || continue
+    name=$(basename "${mesh%.*}")
+    for alpha in "${alphas[@]}"; do
+      if ! "$tessera" layout "$mesh" --alpha "$alpha" --export-p1 "$out" \
+        --max-solve-seconds 5 > /dev/null 2> "$tmp/layout.err"; then
+        echo "solvers.sh: $name: no P1 instance, the layout stopped: $(grep -m1 'error' "$tmp/layout.err")" >&2
+        break
+      fi
+    done
+    [ -f "$out/${name}_a0.lp" ] && echo "solvers.sh: $name: instances at alpha ${alphas[*]}" >&2
+  done
+}
+
+# Runs a command; sets cpu (user + system seconds of the command, from the shell's children times
+# taken right before and after it, so that the parsing here is not counted) and wall.
+children_seconds() {
+  tail -n 1 "$1" | sed 's/m/ /g; s/s//g' | awk '{ printf "%.3f", 60 * $1 + $2 + 60 * $3 + $4 }'
+}
 timed() {
-  /usr/bin/time -f "%e %U %S" -o "$tmp/time" "$@" > "$tmp/out" 2> "$tmp/err"
-  read -r wall user system < <(tail -n 1 "$tmp/time")
-  cpu=$(echo "$user + $system" | bc -l)
+  times > "$tmp/before"
+  local start=$EPOCHREALTIME
+  "$@" > "$tmp/out" 2> "$tmp/err"
+  local end=$EPOCHREALTIME
+  times > "$tmp/after"
+  cpu=$(echo "$(children_seconds "$tmp/after") - $(children_seconds "$tmp/before")" | bc -l)
+  wall=$(echo "$end - $start" | bc -l)
 }
 
 json_field() { sed -n "s/^  \"$1\": \"\{0,1\}\([^\",]*\)\"\{0,1\},\{0,1\}$/\1/p" "$tmp/out" | head -n 1; }
 
-for lp in "$dir"/*.lp; do
-  name=$(basename "${lp%.lp}")
-  json=${lp%.lp}.json
-  [ -f "$json" ] || json=$lp
-  edges=""; conflicts=""
-  for solver in exact glpk glpk-tuned; do
-    timed "$tessera" solve "$json" --solver "$solver" --time-limit "$limit" --json
-    status=$(json_field status); objective=$(json_field objective)
-    edges=$(sed -n 's/^    "edges": \([0-9]*\),\{0,1\}$/\1/p' "$tmp/out")
-    conflicts=$(sed -n 's/^    "conflicts": \([0-9]*\)$/\1/p' "$tmp/out")
-    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$edges" "$conflicts" "$solver" \
-      "${status:-error}" "$objective" "$cpu" "$wall" >> "$tsv"
-  done
+row() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$group" "$name" "$edges" "$conflicts" "$1" "$2" "$3" "$cpu" "$wall" >> "$tsv"; }
+
+solve_with_tessera() {
+  timed "$tessera" solve "$json" --solver "$1" --time-limit "$limit" --json
+  edges=$(sed -n 's/^    "edges": \([0-9]*\),\{0,1\}$/\1/p' "$tmp/out")
+  conflicts=$(sed -n 's/^    "conflicts": \([0-9]*\)$/\1/p' "$tmp/out")
+  local status; status=$(json_field status)
+  row "$1" "${status:-error}" "$(json_field objective)"
+}
+
+solve_with_glpsol() {
   timed glpsol --lp "$lp" --tmlim "$limit" -o "$tmp/glpsol.txt"
+  local status
   case $(sed -n 's/^Status: *//p' "$tmp/glpsol.txt" 2>/dev/null) in
     "INTEGER OPTIMAL") status=optimal ;;
     "INTEGER EMPTY") status=infeasible ;;
     "INTEGER NON-OPTIMAL") status=feasible ;;
     *) status=time_limit ;;
   esac
-  objective=$(sed -n 's/^Objective: *[^=]*= *\([-0-9.e+]*\).*/\1/p' "$tmp/glpsol.txt" 2>/dev/null)
-  printf '%s\t%s\t%s\tglpsol\t%s\t%s\t%s\t%s\n' "$name" "$edges" "$conflicts" "$status" \
-    "$objective" "$cpu" "$wall" >> "$tsv"
+  row glpsol "$status" "$(sed -n 's/^Objective: *[^=]*= *\([-0-9.e+]*\).*/\1/p' "$tmp/glpsol.txt" 2>/dev/null)"
+}
+
+solve_with_cbc() {
   timed cbc "$lp" sec "$limit" solve
-  case $(grep -m1 '^Result - ' "$tmp/out") in
+  local status
+  case $(grep -m1 -E '^Result - |^Problem is infeasible' "$tmp/out") in
     *"Optimal solution found"*) status=optimal ;;
-    *"infeasible"*) status=infeasible ;;
+    *"nfeasible"*) status=infeasible ;;
     *) status=$(grep -q '^Objective value' "$tmp/out" && echo feasible || echo time_limit) ;;
   esac
-  objective=$(sed -n 's/^Objective value: *//p' "$tmp/out" | head -n 1)
-  printf '%s\t%s\t%s\tcbc\t%s\t%s\t%s\t%s\n' "$name" "$edges" "$conflicts" "$status" \
-    "$objective" "$cpu" "$wall" >> "$tsv"
+  row cbc "$status" "$(sed -n 's/^Objective value: *//p' "$tmp/out" | head -n 1)"
+}
+
+if [ -z "$dir" ]; then
+  dir=$root/build/bench-p1
+  rm -rf "$dir"
+  make_mesh_instances "$dir/meshes"
+  [ -x "$generator" ] || { echo "solvers.sh: build tessera_p1_instances first"; exit 2; }
+  "$generator" "$dir/synthetic" > /dev/null || exit 1
+fi
+tsv=$dir/solvers.tsv
+printf 'set\tinstance\tedges\tconflicts\tsolver\tstatus\tobjective\tcpu\twall\n' > "$tsv"
+for lp in "$dir"/*.lp "$dir"/*/*.lp; do
+  [ -f "$lp" ] || continue
+  name=$(basename "${lp%.lp}")
+  group=$(basename "$(dirname "$lp")")
+  json=${lp%.lp}.json
+  [ -f "$json" ] || json=$lp
+  edges=""; conflicts=""
+  for solver in exact glpk glpk-tuned; do solve_with_tessera "$solver"; done
+  for tool in "${tools[@]}"; do "solve_with_$tool"; done
   echo "solvers.sh: $name done" >&2
 done
-node "$root/bench/solvers_table.mjs" "$tsv" "$limit" "$synthetic"
+node "$root/bench/solvers_table.mjs" "$tsv" "$limit"

@@ -1,24 +1,24 @@
 // The table of bench/solvers.sh: per instance the CPU seconds of every solver, whether their
-// optimal objectives agree, and the exact solver's speed-up; then the median ratios.
-//   node bench/solvers_table.mjs <solvers.tsv> <time-limit> <synthetic 0|1>
+// answers agree, and the exact solver's speed-up; then the median ratios per set of instances.
+//   node bench/solvers_table.mjs <solvers.tsv> <time-limit>
 import { readFileSync } from 'node:fs';
 
-const [tsvPath, limitText, syntheticText] = process.argv.slice(2);
+const [tsvPath, limitText] = process.argv.slice(2);
 const limit = Number(limitText);
-const solvers = ['exact', 'glpk', 'glpk-tuned', 'glpsol', 'cbc'];
-const compared = ['glpk', 'glpsol', 'cbc', 'glpk-tuned'];
-
 const rows = readFileSync(tsvPath, 'utf8').trim().split('\n').slice(1)
   .map((line) => line.split('\t'))
-  .map(([instance, edges, conflicts, solver, status, objective, cpu, wall]) => ({
-    instance, edges, conflicts, solver, status, objective: Number(objective),
-    cpu: Number(cpu), wall: Number(wall),
+  .map(([set, instance, edges, conflicts, solver, status, objective, cpu, wall]) => ({
+    set, instance, edges: Number(edges), conflicts: Number(conflicts), solver, status,
+    objective: Number(objective), cpu: Number(cpu), wall: Number(wall),
   }));
-const instances = [...new Set(rows.map((r) => r.instance))];
+const solvers = ['exact', 'glpk', 'glpk-tuned', 'glpsol', 'cbc']
+  .filter((s) => rows.some((r) => r.solver === s));
+const compared = solvers.filter((s) => s !== 'exact');
+const instances = [...new Set(rows.map((r) => `${r.set}/${r.instance}`))];
 const finished = (r) => r.status === 'optimal' || r.status === 'infeasible';
 
-// The optimal objectives agree within 1e-6 (relative), and no solver calls infeasible what
-// another solved.
+// Every finished solver gives the same answer: the optimal objectives agree within 1e-6
+// (relative), and no solver calls infeasible what another solved.
 function agreement(results) {
   const done = results.filter(finished);
   const optimal = done.filter((r) => r.status === 'optimal').map((r) => r.objective);
@@ -26,7 +26,12 @@ function agreement(results) {
   return optimal.every((x) => Math.abs(x - optimal[0]) <= 1e-6 * Math.max(1, Math.abs(x)));
 }
 
-const time = (r) => (finished(r) ? r.cpu.toFixed(2) : `>${limit}`);
+function answer(results) {
+  const done = results.filter(finished);
+  return done.length === 0 ? 'unsolved' : done[0].status;
+}
+
+const time = (r) => (finished(r) ? r.cpu.toFixed(3) : `>${limit}`);
 // other / exact; a bound when either did not finish.
 function ratio(other, exact, key) {
   const value = other[key] / Math.max(exact[key], 1e-3);
@@ -38,34 +43,42 @@ const median = (xs) => {
   return s.length === 0 ? NaN : s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
 };
 
-const header = ['instance', '|E|', '|I|', ...solvers, 'agree', ...compared.map((s) => `${s}/exact`)];
+const header = ['instance', '|E|', '|I|', 'answer', ...solvers, 'agree',
+  ...compared.map((s) => `${s}/exact`)];
 const table = [header];
-const ratios = Object.fromEntries(compared.map((s) => [s, { cpu: [], wall: [] }]));
+const measured = [];  // per instance: its set, size and ratios
 let disagreements = 0;
-for (const instance of instances) {
-  const results = rows.filter((r) => r.instance === instance);
+for (const key of instances) {
+  const results = rows.filter((r) => `${r.set}/${r.instance}` === key);
   const by = Object.fromEntries(results.map((r) => [r.solver, r]));
   const agree = agreement(results);
   disagreements += agree ? 0 : 1;
-  const cells = [instance, by.exact.edges, by.exact.conflicts, ...solvers.map((s) => time(by[s])),
-    agree ? 'yes' : 'NO'];
+  const cells = [key, by.exact.edges, by.exact.conflicts, answer(results),
+    ...solvers.map((s) => time(by[s])), agree ? 'yes' : 'NO'];
+  const ratios = {};
   for (const s of compared) {
     const r = ratio(by[s], by.exact, 'cpu');
-    ratios[s].cpu.push(r.value);
-    ratios[s].wall.push(ratio(by[s], by.exact, 'wall').value);
+    ratios[s] = { cpu: r.value, wall: ratio(by[s], by.exact, 'wall').value };
     cells.push(r.text);
   }
+  measured.push({ set: by.exact.set, edges: by.exact.edges, ratios });
   table.push(cells);
 }
 const widths = header.map((_, i) => Math.max(...table.map((row) => String(row[i]).length)));
-if (syntheticText === '1')
-  console.log('SYNTHETIC instances (tessera_p1_instances: random singularities on a flat torus, ' +
-    'shaped like thesis Appendix B), not port graphs of real layouts.');
-console.log(`CPU seconds per solver (time limit ${limit} s; >${limit}: not finished); ` +
-  'ratio = other / exact (> : a lower bound, the other did not finish).');
+console.log(`CPU seconds per process (start-up and reading included; time limit ${limit} s, ` +
+  `>${limit}: not finished); ratio = other / exact (>: a lower bound, the other did not finish).`);
 for (const row of table) console.log(row.map((c, i) => String(c).padStart(widths[i])).join('  '));
-const summary = compared.map((s) =>
-  `${s}/exact ${median(ratios[s].cpu).toFixed(1)}x (wall ${median(ratios[s].wall).toFixed(1)}x)`);
-console.log(`median speed-up of exact over: ${summary.join(', ')}; ` +
-  `${instances.length} instances, ${disagreements} with disagreeing optima`);
+
+function summary(label, chosen) {
+  if (chosen.length === 0) return;
+  const parts = compared.map((s) => `${s} ${median(chosen.map((m) => m.ratios[s].cpu)).toFixed(1)}x` +
+    ` (wall ${median(chosen.map((m) => m.ratios[s].wall)).toFixed(1)}x)`);
+  console.log(`median speed-up of exact, ${label} (${chosen.length}): ${parts.join(', ')}`);
+}
+const sets = [...new Set(measured.map((m) => m.set))];
+for (const set of sets) summary(`${set} instances`, measured.filter((m) => m.set === set));
+for (const set of sets)
+  summary(`${set} instances with |E| >= 1000`, measured.filter((m) => m.set === set && m.edges >= 1000));
+summary('all instances', measured);
+console.log(`${instances.length} instances, ${disagreements} with disagreeing answers`);
 process.exitCode = disagreements ? 1 : 0;
