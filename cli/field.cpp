@@ -39,10 +39,7 @@ int field_command(const Args& args) {
   }
   if (parsed.positional.size() != 1)
     throw UsageError("'tessera field' takes one mesh file; run 'tessera field --help'");
-  const LoadedMesh loaded = load_mesh_argument(parsed.positional[0], parsed);
-  for (const std::string& warning : loaded.report.warnings)
-    std::fprintf(stderr, "tessera: warning: %s\n", warning.c_str());
-  const Mesh mesh = triangles_of(loaded.mesh);
+  const Mesh mesh = load_triangle_mesh_argument(parsed.positional[0], parsed);
   const Connectivity connectivity = build_connectivity(mesh);
   const FaceFrames frames = face_frames(mesh);
   const CrossField field =

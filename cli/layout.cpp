@@ -128,10 +128,7 @@ int layout_command(const Args& args) {
   const matching::SolverKind solver =
       matching::solver_kind_from_name(parsed.value("--solver", "exact"));
 
-  const LoadedMesh loaded = load_mesh_argument(parsed.positional[0], parsed);
-  for (const std::string& warning : loaded.report.warnings)
-    std::fprintf(stderr, "tessera: warning: %s\n", warning.c_str());
-  const Mesh mesh = triangles_of(loaded.mesh);
+  const Mesh mesh = load_triangle_mesh_argument(parsed.positional[0], parsed);
   const Progress progress = stderr_progress();
   const auto start = std::chrono::steady_clock::now();
   const Connectivity connectivity = build_connectivity(mesh);

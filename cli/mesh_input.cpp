@@ -1,5 +1,9 @@
 #include "mesh_input.h"
 
+#include <cstdio>
+
+#include "field_input.h"
+
 namespace tessera::cli {
 
 std::set<std::string> mesh_input_options() {
@@ -21,6 +25,13 @@ LoadedMesh load_mesh_argument(const std::string& path, const ParsedArgs& args) {
   ValidationOptions options;
   options.weld_tolerance = args.number("--weld-tolerance", options.weld_tolerance);
   return load_mesh_file(path, limits, options);
+}
+
+Mesh load_triangle_mesh_argument(const std::string& path, const ParsedArgs& args) {
+  const LoadedMesh loaded = load_mesh_argument(path, args);
+  for (const std::string& warning : loaded.report.warnings)
+    std::fprintf(stderr, "tessera: warning: %s\n", warning.c_str());
+  return triangles_of(loaded.mesh);
 }
 
 }  // namespace tessera::cli

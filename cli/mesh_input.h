@@ -19,4 +19,8 @@ extern const char* const kMeshInputHelp;
 // load_mesh_file() with the limits and validation options given on the command line.
 LoadedMesh load_mesh_argument(const std::string& path, const ParsedArgs& args);
 
+// load_mesh_argument() for the commands that work on triangles: the load warnings go to stderr and
+// polygons are split into triangles.
+Mesh load_triangle_mesh_argument(const std::string& path, const ParsedArgs& args);
+
 }  // namespace tessera::cli

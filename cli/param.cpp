@@ -67,10 +67,7 @@ int param_command(const Args& args) {
   ParamOptions options;
   options.h_relative = parsed.number("--h", options.h_relative);
   if (!(options.h_relative > 0)) throw UsageError("--h expects a positive number");
-  const LoadedMesh loaded = load_mesh_argument(parsed.positional[0], parsed);
-  for (const std::string& warning : loaded.report.warnings)
-    std::fprintf(stderr, "tessera: warning: %s\n", warning.c_str());
-  const Mesh mesh = triangles_of(loaded.mesh);
+  const Mesh mesh = load_triangle_mesh_argument(parsed.positional[0], parsed);
   const Progress progress = stderr_progress();
 
   const auto start = std::chrono::steady_clock::now();

@@ -14,16 +14,13 @@ namespace tessera {
 namespace {
 
 using test::bytes_of;
+using test::quoted;
 using test::run_cli;
 using test::write_temp_file;
 
-std::string quoted_path(const std::string& path) {
-  return "'" + path + "'";
-}
-
 TEST(CliInfo, PrintsTheFixedJsonKeys) {
   const std::string path = write_temp_file("torus.obj", write_obj(torus(1.0, 0.3, 24, 12)));
-  const auto result = run_cli("info --json " + quoted_path(path));
+  const auto result = run_cli("info --json " + quoted(path));
   ASSERT_EQ(result.exit_code, 0) << result.out;
   const auto json = nlohmann::json::parse(result.out);
   for (const char* key : {"vertices", "faces", "edges", "components", "boundary_loops", "genus",
@@ -45,7 +42,7 @@ TEST(CliInfo, ReportsRepairsAsWarnings) {
   Mesh mesh = open_cylinder(1, 1, 8, 2);
   std::swap(mesh.face_vertices[1], mesh.face_vertices[2]);
   const std::string path = write_temp_file("flipped.obj", write_obj(mesh));
-  const auto result = run_cli("info --json " + quoted_path(path));
+  const auto result = run_cli("info --json " + quoted(path));
   ASSERT_EQ(result.exit_code, 0) << result.out;
   const auto json = nlohmann::json::parse(result.out);
   EXPECT_EQ(json["oriented"], false);
@@ -84,7 +81,7 @@ TEST(CliInfo, BadInputGivesExitCodeTwoAndASpecificMessage) {
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const std::string path = write_temp_file(cases[i].first, cases[i].second);
     const auto start = std::chrono::steady_clock::now();
-    const auto result = run_cli("info " + quoted_path(path), true);
+    const auto result = run_cli("info " + quoted(path), true);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
     EXPECT_EQ(result.exit_code, 2) << cases[i].first << ": " << result.out;
     EXPECT_NE(result.out.find(cases[i].first), std::string::npos) << result.out;
@@ -98,8 +95,8 @@ TEST(CliConvert, ObjToGlbToObjKeepsTheMesh) {
   const std::string obj = write_temp_file("in.obj", write_obj(mesh));
   const std::string glb = test::temp_path("mid.glb");
   const std::string back = test::temp_path("out.obj");
-  ASSERT_EQ(run_cli("convert " + quoted_path(obj) + " " + quoted_path(glb)).exit_code, 0);
-  ASSERT_EQ(run_cli("convert " + quoted_path(glb) + " " + quoted_path(back)).exit_code, 0);
+  ASSERT_EQ(run_cli("convert " + quoted(obj) + " " + quoted(glb)).exit_code, 0);
+  ASSERT_EQ(run_cli("convert " + quoted(glb) + " " + quoted(back)).exit_code, 0);
   const Mesh result = read_mesh_file(back, {});
   test::expect_same_mesh(mesh, result, 1e-6);
 }
@@ -107,11 +104,11 @@ TEST(CliConvert, ObjToGlbToObjKeepsTheMesh) {
 TEST(CliConvert, PlyKeepsPolygonsAndRefusesUnknownExtensions) {
   const std::string obj = write_temp_file("quads.obj", write_obj(quad_torus(1, 0.3, 12, 6)));
   const std::string ply = test::temp_path("quads.ply");
-  ASSERT_EQ(run_cli("convert --ascii " + quoted_path(obj) + " " + quoted_path(ply)).exit_code, 0);
+  ASSERT_EQ(run_cli("convert --ascii " + quoted(obj) + " " + quoted(ply)).exit_code, 0);
   const Mesh back = read_mesh_file(ply, {});
   EXPECT_EQ(back.face_count(), 72u);
   EXPECT_EQ(back.face_size(0), 4u);
-  const auto bad = run_cli("convert " + quoted_path(obj) + " out.xyz", true);
+  const auto bad = run_cli("convert " + quoted(obj) + " out.xyz", true);
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.out.find(".obj, .ply, .glb"), std::string::npos) << bad.out;
 }

@@ -33,4 +33,9 @@ inline CliResult run_cli(const std::string& arguments, bool merge_stderr = false
   return result;
 }
 
+// A path as one shell word (paths of the tests hold no single quotes).
+inline std::string quoted(const std::string& path) {
+  return "'" + path + "'";
+}
+
 }  // namespace tessera::test

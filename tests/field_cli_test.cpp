@@ -15,13 +15,10 @@
 namespace tessera {
 namespace {
 
+using test::quoted;
 using test::run_cli;
 using test::temp_path;
 using test::write_temp_file;
-
-std::string quoted(const std::string& path) {
-  return "'" + path + "'";
-}
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path);

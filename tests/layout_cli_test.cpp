@@ -15,13 +15,10 @@
 namespace tessera {
 namespace {
 
+using test::quoted;
 using test::run_cli;
 using test::temp_path;
 using test::write_temp_file;
-
-std::string quoted(const std::string& path) {
-  return "'" + path + "'";
-}
 
 TEST(CliLayout, WritesJsonPlyAndGlb) {
   const std::string path = write_temp_file("sphere.obj", write_obj(icosphere(3)));
