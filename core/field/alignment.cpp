@@ -75,12 +75,38 @@ Eigen::Vector3d feature_tangent(const Mesh& mesh, const Connectivity& c,
   return mesh.positions[to] - mesh.positions[from];
 }
 
+// Sharp-edge constraints of adjacent faces that disagree by more than this after transport across
+// their edge (modulo a quarter turn) force a singularity between them. Along a feature line and at
+// a right-angled feature corner they agree; on a scan, where tessellation noise makes many edges
+// sharp (a fifth of dragon's at 35 degrees), they do not.
+constexpr double kConflictingConstraint = std::numbers::pi / 6;
+
+// Frees the faces whose sharp-edge constraint conflicts with a neighbour's (boundary constraints
+// stay): the smoothest field decides there instead of the noise.
+void free_conflicting_constraints(const Mesh& mesh, const Connectivity& c, const FaceFrames& frames,
+                                  const std::vector<std::uint8_t>& on_boundary,
+                                  FaceConstraints& constraints) {
+  const std::vector<double> kappa = connection_angles(mesh, c, frames);
+  std::vector<std::uint8_t> conflict(mesh.face_count(), 0);
+  for (Index h = 0; h < c.corner_count; ++h) {
+    if (c.is_boundary_halfedge(c.twin[h])) continue;
+    const Index f = c.face[h];
+    const Index g = c.face[c.twin[h]];
+    if (!constraints.fixed[f] || !constraints.fixed[g]) continue;
+    const double turn = std::remainder(constraints.angle[f] + kappa[h] - constraints.angle[g],
+                                       std::numbers::pi / 2);
+    if (std::abs(turn) > kConflictingConstraint) conflict[f] = conflict[g] = 1;
+  }
+  for (Index f = 0; f < mesh.face_count(); ++f)
+    if (conflict[f] && !on_boundary[f]) constraints.fixed[f] = 0;
+}
+
 }  // namespace
 
 FaceConstraints feature_constraints(const Mesh& mesh, const Connectivity& c,
                                     const FaceFrames& frames, double sharp_radians) {
-  const std::vector<std::uint8_t> sharp = feature_edges(c, dihedral_angles(mesh, c), sharp_radians);
   const std::vector<double> dihedral = dihedral_angles(mesh, c);
+  const std::vector<std::uint8_t> sharp = feature_edges(c, dihedral, sharp_radians);
   FaceConstraints constraints;
   constraints.fixed.assign(mesh.face_count(), 0);
   constraints.angle.assign(mesh.face_count(), 0.0);
@@ -98,6 +124,9 @@ FaceConstraints feature_constraints(const Mesh& mesh, const Connectivity& c,
         frames.angle(f, c.is_boundary_edge(e) ? halfedge_vector(mesh, c, h)
                                               : feature_tangent(mesh, c, sharp, h));
   }
+  std::vector<std::uint8_t> on_boundary(mesh.face_count(), 0);
+  for (Index f = 0; f < mesh.face_count(); ++f) on_boundary[f] = rank[f] == 2 * std::numbers::pi;
+  free_conflicting_constraints(mesh, c, frames, on_boundary, constraints);
   for (std::uint8_t fixed : constraints.fixed) constraints.count += fixed;
   return constraints;
 }
