@@ -40,14 +40,12 @@ std::string param_text(const SeamlessParam& param) {
   char text[512];
   std::snprintf(text, sizeof text,
                 "flipped triangles %zu (%zu before the injectivity constraints, %zu outside the "
-                "singularities' one-rings), %zu valence-3/5 pairs cancelled\nmax seam error %.3g "
-                "(relative), energy %.4g, h %.4g\n",
+                "singularities' one-rings)\nmax seam error %.3g (relative), energy %.4g, h %.4g\n",
                 param.flipped_triangles, param.flipped_before_injectivity,
-                param.flipped_outside_singular_rings, param.cancelled_dipoles, param.max_seam_error,
-                param.energy, param.h);
+                param.flipped_outside_singular_rings, param.max_seam_error, param.energy, param.h);
   std::string result = text;
   for (const StepTime& t : param.seconds) {
-    std::snprintf(text, sizeof text, "  %-30s %.3f s\n", t.step.c_str(), t.seconds);
+    std::snprintf(text, sizeof text, "  %-12s %.3f s\n", t.step.c_str(), t.seconds);
     result += text;
   }
   return result;

@@ -2,27 +2,17 @@
 
 namespace tessera {
 
-namespace {
-
-nlohmann::ordered_json singularity_list(const std::vector<Singularity>& singularities) {
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const Singularity& s : singularities)
-    list.push_back({{"vertex", s.vertex}, {"index", s.index}, {"valence", s.valence}});
-  return list;
-}
-
-}  // namespace
-
 nlohmann::ordered_json singularities_json(const CrossField& field) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const Singularity& s : field.singularities)
+    list.push_back({{"vertex", s.vertex}, {"index", s.index}, {"valence", s.valence}});
   return {{"euler_characteristic", field.euler_characteristic},
           {"index_sum", field.index_sum},
-          {"singularities", singularity_list(field.singularities)}};
+          {"singularities", std::move(list)}};
 }
 
 nlohmann::ordered_json param_json(const CrossField& field, const SeamlessParam& param) {
   nlohmann::ordered_json json = singularities_json(field);
-  json["singularities"] = singularity_list(param.singularities);
-  json["cancelled_dipoles"] = param.cancelled_dipoles;
   json["flipped_triangles"] = param.flipped_triangles;
   json["flipped_outside_singular_rings"] = param.flipped_outside_singular_rings;
   json["flipped_before_injectivity"] = param.flipped_before_injectivity;

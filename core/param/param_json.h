@@ -12,8 +12,7 @@ namespace tessera {
 // {"euler_characteristic", "index_sum", "singularities": [{"vertex", "index", "valence"}]}.
 nlohmann::ordered_json singularities_json(const CrossField& field);
 
-// singularities_json() with the parameterization's singularities (the field's less the cancelled
-// dipoles), cancelled_dipoles, flipped_triangles, flipped_outside_singular_rings,
+// singularities_json() plus flipped_triangles, flipped_outside_singular_rings,
 // flipped_before_injectivity, max_seam_error, energy, h, seconds (per step).
 nlohmann::ordered_json param_json(const CrossField& field, const SeamlessParam& param);
 

@@ -1,6 +1,5 @@
 #include "param/seamless_param.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -9,7 +8,6 @@
 
 #include "base/error.h"
 #include "field/cut_graph.h"
-#include "field/dipoles.h"
 #include "mesh/geometry.h"
 #include "param/poisson.h"
 #include "param/seams.h"
@@ -72,10 +70,14 @@ void check_flat_holonomy(const Connectivity& c, const CrossField& field, const C
           "curvature directions (--align curvature) or one with singularities");
 }
 
-// Steps 1-4 for one field.
-SeamlessParam parameterize(const Mesh& mesh, const Connectivity& c, const FaceFrames& frames,
-                           const CrossField& field, const ParamOptions& options,
-                           const Progress& progress) {
+}  // namespace
+
+SeamlessParam seamless_parameterization(const Mesh& mesh, const Connectivity& c,
+                                        const FaceFrames& frames, const CrossField& field,
+                                        const ParamOptions& options, const Progress& progress) {
+  if (!(options.h_relative > 0) || !std::isfinite(options.h_relative))
+    throw InputError("the relative sizing h must be a positive number, got " +
+                     std::to_string(options.h_relative));
   SeamlessParam param;
   StepTimer timer(param.seconds);
   param.h = options.h_relative * bounding_box(mesh).diagonal();
@@ -125,47 +127,6 @@ SeamlessParam parameterize(const Mesh& mesh, const Connectivity& c, const FaceFr
   }
   const double area = std::accumulate(frames.area.begin(), frames.area.end(), 0.0);
   param.energy = poisson_energy(problem, x) / area;
-  return param;
-}
-
-// Per edge 1 if it joins an index-1/4 and an index-(-1/4) vertex of a triangle flipped in param.
-std::vector<std::uint8_t> flipped_dipole_edges(const Connectivity& c, const CrossField& field,
-                                               const SeamlessParam& param) {
-  std::vector<std::uint8_t> edges(c.edge_count(), 0);
-  for (Index h = 0; h < c.halfedge_count(); ++h) {
-    if (c.is_boundary_halfedge(h)) continue;
-    const Index first = h - h % 3;  // corner halfedges are the corners, three per triangle
-    const Eigen::Vector2d ab = param.uv[first + 1] - param.uv[first];
-    const Eigen::Vector2d ac = param.uv[first + 2] - param.uv[first];
-    const bool flipped = ab.x() * ac.y() - ab.y() * ac.x() <= 0;
-    if (flipped && field.vertex_index[c.from_vertex(h)] * field.vertex_index[c.to_vertex[h]] == -1)
-      edges[c.edge[h]] = 1;
-  }
-  return edges;
-}
-
-}  // namespace
-
-SeamlessParam seamless_parameterization(const Mesh& mesh, const Connectivity& c,
-                                        const FaceFrames& frames, const CrossField& field,
-                                        const ParamOptions& options, const Progress& progress) {
-  if (!(options.h_relative > 0) || !std::isfinite(options.h_relative))
-    throw InputError("the relative sizing h must be a positive number, got " +
-                     std::to_string(options.h_relative));
-  SeamlessParam param = parameterize(mesh, c, frames, field, options, progress);
-  const std::vector<std::uint8_t> dipoles = flipped_dipole_edges(c, field, param);
-  if (options.cancel_flipped_dipoles &&
-      std::find(dipoles.begin(), dipoles.end(), 1) != dipoles.end()) {
-    const DipoleRematching rematched = cancel_adjacent_dipoles(c, field, dipoles);
-    SeamlessParam second = parameterize(mesh, c, frames, rematched.field, options, progress);
-    if (second.flipped_triangles < param.flipped_triangles) {
-      second.cancelled_dipoles = rematched.cancelled;
-      for (StepTime& t : second.seconds) t.step += " (dipoles cancelled)";
-      param.seconds.insert(param.seconds.end(), second.seconds.begin(), second.seconds.end());
-      second.seconds = std::move(param.seconds);
-      param = std::move(second);
-    }
-  }
   progress.step("injectivity", 1);
   return param;
 }

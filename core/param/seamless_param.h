@@ -7,10 +7,7 @@
 //  2. assembly: energy (poisson.h), transition constraints eliminated into a basis P (seams.h);
 //  3. solve: P^T Q P y = P^T b, one sparse LDLT factorization;
 //  4. injectivity: bisector constraints around singularities and on flipped triangles, with GLPK
-//     (injectivity.h);
-//  5. a triangle that stays flipped because a valence-3 and a valence-5 singularity share one of
-//     its edges (no bisector constraints hold there): that dipole is cancelled by rematching the
-//     edge (field/dipoles.h) and steps 1-4 run again with the field's other singularities.
+//     (injectivity.h).
 //
 // In:  a triangle mesh, its connectivity and face frames, a cross field of it, the options.
 // Out: the SeamlessParam value. Throws InputError for bad options or a field that admits no
@@ -32,9 +29,6 @@ namespace tessera {
 
 struct ParamOptions {
   double h_relative = 1e-2;  // h = h_relative * bounding-box diagonal (Sec. 6.9 default)
-  // A valence-3/5 pair on the edge of a triangle still flipped after step 4 is cancelled by
-  // rematching that edge (field/dipoles.h), and steps 1-4 run again; kept if fewer flip.
-  bool cancel_flipped_dipoles = true;
   InjectivityOptions injectivity;
 };
 
@@ -49,8 +43,7 @@ struct SeamlessParam {
   std::vector<std::uint8_t> rotation;        // per halfedge h: r_h in Z4 (LAYOUT_NOTES, seams.h):
   std::vector<Eigen::Vector2d> translation;  //   uv in face(twin h) = J^r_h uv in face(h) + t_h
   std::vector<std::uint8_t> cut;             // per edge, 1 on the cut graph
-  std::vector<Singularity> singularities;    // of the field, less the cancelled dipoles
-  std::size_t cancelled_dipoles = 0;         // pairs of singularities removed (field/dipoles.h)
+  std::vector<Singularity> singularities;    // of the field (cross_field.h)
   std::size_t flipped_before_injectivity = 0;
   std::size_t flipped_triangles = 0;
   std::size_t flipped_outside_singular_rings = 0;  // flipped, with no singular vertex
