@@ -16,20 +16,8 @@
 namespace tessera {
 namespace {
 
-struct LayoutRun {
-  test::Parameterized input;
-  layout::LayoutGraph graph;
-  layout::QuadLayout layout;
-};
-
-LayoutRun run_layout(Mesh mesh, double alpha = 5) {
-  LayoutRun run{test::parameterized(std::move(mesh)), {}, {}};
-  const layout::LayoutOptions options;
-  run.graph = layout::build_layout_graph(run.input.charts(), options, Progress());
-  run.layout = layout::solve_layout(run.input.charts(), run.graph, alpha,
-                                    matching::SolverKind::exact, options.limits, Progress());
-  return run;
-}
+using test::LayoutRun;
+using test::run_layout;
 
 double total_area(const Mesh& mesh) {
   const std::vector<double> areas = face_areas(mesh);

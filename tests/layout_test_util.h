@@ -9,6 +9,7 @@
 
 #include "field/design.h"
 #include "layout/charts.h"
+#include "layout/quad_layout.h"
 #include "mesh/connectivity.h"
 #include "param/poisson.h"
 #include "param/seamless_param.h"
@@ -98,6 +99,22 @@ inline Parameterized parameterized(Mesh mesh, FieldOptions field = {}) {
   p.param =
       seamless_parameterization(p.mesh, p.connectivity, frames, cross, ParamOptions{}, Progress());
   return p;
+}
+
+// A mesh through the whole pipeline: field, parameterization, graph G, layout at alpha.
+struct LayoutRun {
+  Parameterized input;
+  layout::LayoutGraph graph;
+  layout::QuadLayout layout;
+};
+
+inline LayoutRun run_layout(Mesh mesh, double alpha = 5) {
+  LayoutRun run{parameterized(std::move(mesh)), {}, {}};
+  const layout::LayoutOptions options;
+  run.graph = layout::build_layout_graph(run.input.charts(), options, Progress());
+  run.layout = layout::solve_layout(run.input.charts(), run.graph, alpha,
+                                    matching::SolverKind::exact, options.limits, Progress());
+  return run;
 }
 
 }  // namespace tessera::test

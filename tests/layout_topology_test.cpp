@@ -11,20 +11,8 @@
 namespace tessera {
 namespace {
 
-struct LayoutRun {
-  test::Parameterized input;
-  layout::LayoutGraph graph;
-  layout::QuadLayout layout;
-};
-
-LayoutRun run_layout(Mesh mesh) {
-  LayoutRun run{test::parameterized(std::move(mesh)), {}, {}};
-  const layout::LayoutOptions options;
-  run.graph = layout::build_layout_graph(run.input.charts(), options, Progress());
-  run.layout = layout::solve_layout(run.input.charts(), run.graph, 5, matching::SolverKind::exact,
-                                    options.limits, Progress());
-  return run;
-}
+using test::LayoutRun;
+using test::run_layout;
 
 // The faces of `mesh` whose centroid has x > cut, with the vertices they use.
 Mesh faces_beyond(const Mesh& mesh, double cut) {
