@@ -9,6 +9,7 @@
 #include "matching/blossom.h"
 #include "matching/check.h"
 #include "matching/components.h"
+#include "matching/exact_solver.h"
 #include "matching/generate.h"
 #include "matching/random.h"
 #include "matching/solver.h"
@@ -192,6 +193,34 @@ TEST(MatchingExact, IsDeterministic) {
   EXPECT_EQ(first.edges, second.edges);
   EXPECT_EQ(first.nodes, second.nodes);
   EXPECT_EQ(first.objective, second.objective);
+}
+
+// The alpha slider's re-solve: the weight-free preprocessing kept in a cache gives the very
+// results of a fresh solve for every new set of weights; a problem with another graph (one more
+// conflict pair, as the layout's loop rounds add) is solved without it and does not replace it.
+TEST(MatchingExact, ACacheReSolvesNewWeightsAsAFreshSolveDoes) {
+  SyntheticLayoutSpec spec = layout_spec(11, 8.0, 5.0);
+  const MatchingProblem base = synthetic_layout_instance(spec);
+  ExactSolverCache cache;
+  Random random(5);
+  for (int round = 0; round < 6; ++round) {
+    MatchingProblem p = base;
+    if (round > 0)
+      for (MatchingEdge& e : p.edges) e.weight *= 0.5 + random.unit();
+    if (round == 3) p.conflicts.push_back({p.conflicts[0].first, p.conflicts[1].second});
+    const MatchingResult fresh = solve_matching(p, SolverKind::exact, 60.0);
+    const MatchingResult cached = solve_matching(p, SolverKind::exact, 60.0, Progress(), &cache);
+    const std::string what = "round " + std::to_string(round);
+    ASSERT_EQ(fresh.status, SolveStatus::optimal) << what;
+    EXPECT_EQ(cached.status, fresh.status) << what;
+    EXPECT_EQ(cached.edges, fresh.edges) << what;
+    EXPECT_EQ(cached.objective, fresh.objective) << what;
+    EXPECT_EQ(cached.nodes, fresh.nodes) << what;
+  }
+  ASSERT_NE(cache.structure_for(base), nullptr);
+  MatchingProblem other = base;
+  other.conflicts.pop_back();
+  EXPECT_EQ(cache.structure_for(other), nullptr);
 }
 
 TEST(MatchingExact, ATimeLimitReturnsTheBestWithAProvenBound) {

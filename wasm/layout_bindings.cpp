@@ -116,6 +116,7 @@ val layout_graph(const val& options, const val& on_progress) {
     Session& s = session_with_param();
     s.layout_graph.reset();
     s.layout.reset();
+    s.p1_cache = {};
     layout::LayoutOptions layout_options;
     layout_options.rho = number_option(options, "rho", layout_options.rho);
     if (!(layout_options.rho > 1)) throw InputError("option 'rho' must be a number above 1");
@@ -145,7 +146,7 @@ val layout_solve(double alpha, const val& options, const val& on_progress) {
     s.layout.reset();
     const layout::Charts charts = charts_of(s);
     s.layout = layout::solve_layout(charts, *s.layout_graph, alpha, solver, Limits(),
-                                    js_progress(on_progress));
+                                    js_progress(on_progress), &s.p1_cache);
     const layout::QuadLayout& l = *s.layout;
     nlohmann::ordered_json info = layout::layout_json(*s.layout_graph, l);
     info["problem_count"] = l.check.problem_count;

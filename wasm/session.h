@@ -25,6 +25,8 @@ struct Session {
   // the last alpha, kept for its export.
   std::optional<layout::LayoutGraph> layout_graph;
   std::optional<layout::QuadLayout> layout;
+  // P1's weight-free preprocessing of layout_graph, for the next alpha.
+  matching::ExactSolverCache p1_cache;
 
   void set_mesh(const Mesh& shown) {
     *this = Session();
@@ -36,6 +38,7 @@ struct Session {
     param.reset();
     layout_graph.reset();
     layout.reset();
+    p1_cache = {};
   }
 };
 

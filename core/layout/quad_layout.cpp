@@ -79,9 +79,10 @@ namespace {
 // One solve of P1 and the layout it gives (Ch. 5, LAYOUT_NOTES "The layout itself").
 void lay_out(const Charts& charts, const LayoutGraph& graph,
              const matching::MatchingProblem& problem, const Limits& limits,
-             const Progress& progress, StageClock& clock, QuadLayout& layout) {
-  layout.matching =
-      matching::solve_matching(problem, layout.solver, limits.max_solve_seconds, progress);
+             const Progress& progress, matching::ExactSolverCache* p1_cache, StageClock& clock,
+             QuadLayout& layout) {
+  layout.matching = matching::solve_matching(problem, layout.solver, limits.max_solve_seconds,
+                                             progress, p1_cache);
   clock.stage_done("P1");
   layout.arcs.clear();
   for (std::uint32_t e : layout.matching.edges) layout.arcs.push_back(graph.arcs[e]);
@@ -103,15 +104,15 @@ constexpr int kMaxLoopRounds = 8;
 // Ch. 5 in rounds: while the check finds patches that are no disks, the chosen pairs that close
 // loops (loop_pairs()) become conflicts and P1 is solved again.
 QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
-                        matching::SolverKind solver, const Limits& limits,
-                        const Progress& progress) {
+                        matching::SolverKind solver, const Limits& limits, const Progress& progress,
+                        matching::ExactSolverCache* p1_cache) {
   QuadLayout layout;
   layout.alpha = alpha;
   layout.solver = solver;
   std::vector<StageSeconds> seconds;
   StageClock clock(seconds);
   matching::MatchingProblem problem = matching_problem(graph.graph, alpha);
-  lay_out(charts, graph, problem, limits, progress, clock, layout);
+  lay_out(charts, graph, problem, limits, progress, p1_cache, clock, layout);
   for (int round = 0;
        round < kMaxLoopRounds && !layout.check.valid() && layout.matching.has_solution(); ++round) {
     const std::vector<EdgePair> pairs = loop_pairs(charts, graph.graph, layout.arcs);
@@ -119,7 +120,7 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
     for (const EdgePair& pair : pairs) problem.conflicts.push_back({pair.first, pair.second});
     QuadLayout next = layout;
     next.loop_conflicts += pairs.size();
-    lay_out(charts, graph, problem, limits, progress, clock, next);
+    lay_out(charts, graph, problem, limits, progress, p1_cache, clock, next);
     if (!next.matching.has_solution()) break;
     layout = std::move(next);
   }

@@ -38,12 +38,13 @@ class Search {
  public:
   Search(const MatchingProblem& problem, LpRelaxation& lp, const Adjacency& exclusion,
          const std::vector<Fixed>& root, const IncumbentSearch& heuristics, Incumbent start,
-         Clock::time_point deadline, const Progress& progress)
+         double root_bound, Clock::time_point deadline, const Progress& progress)
       : problem_(problem),
         lp_(lp),
         exclusion_(exclusion),
         heuristics_(heuristics),
         best_(std::move(start)),
+        root_bound_(root_bound),
         deadline_(deadline),
         progress_(progress),
         root_(root.size()) {
@@ -52,7 +53,9 @@ class Search {
   }
 
   SearchResult run() {
-    open_.push(Node{});
+    Node root;
+    root.bound = root_bound_;
+    open_.push(std::move(root));
     double stopped_bound = kInfinity;
     while (!open_.empty()) {
       Node node = open_.top();
@@ -169,6 +172,9 @@ class Search {
       }
       if (status != LpStatus::optimal) return true;
       node.bound = std::max(node.bound, lp_.objective());
+      // The simplex's cutoff stops only on a bound strictly above it: a fractional optimum as
+      // dear as the incumbent ends here too, or its degenerate subtree is searched in vain.
+      if (node.bound >= cutoff()) return true;
       fix_by_reduced_cost(node);
       const std::int64_t e = branching_edge();
       if (e < 0) {
@@ -188,6 +194,7 @@ class Search {
   const Adjacency& exclusion_;
   const IncumbentSearch& heuristics_;
   Incumbent best_;
+  double root_bound_;
   Clock::time_point deadline_;
   const Progress& progress_;
   std::vector<std::int8_t> root_;     // per edge: -1 free, else the value preprocessing fixed
@@ -205,10 +212,11 @@ double bound_tolerance(double incumbent) {
 
 SearchResult branch_and_bound(const MatchingProblem& problem, LpRelaxation& lp,
                               const Adjacency& exclusion, const std::vector<Fixed>& root,
-                              const IncumbentSearch& heuristics, Incumbent start,
+                              const IncumbentSearch& heuristics, Incumbent start, double root_bound,
                               std::chrono::steady_clock::time_point deadline,
                               const Progress& progress) {
-  return Search(problem, lp, exclusion, root, heuristics, std::move(start), deadline, progress)
+  return Search(problem, lp, exclusion, root, heuristics, std::move(start), root_bound, deadline,
+                progress)
       .run();
 }
 

@@ -30,10 +30,11 @@ struct SearchResult {
 
 // `lp` holds the root relaxation with the preprocessing's fixings `root` applied; `exclusion` is
 // the exclusion graph whose violated cliques are separated at every node; `start` is the best
-// matching known so far (or none).
+// matching known so far (or none); `root_bound` a proven lower bound of P1 (e.g. the cheapest
+// matching without conflicts, which may exceed the relaxation's), the least bound of every node.
 SearchResult branch_and_bound(const MatchingProblem& problem, LpRelaxation& lp,
                               const Adjacency& exclusion, const std::vector<Fixed>& root,
-                              const IncumbentSearch& heuristics, Incumbent start,
+                              const IncumbentSearch& heuristics, Incumbent start, double root_bound,
                               std::chrono::steady_clock::time_point deadline,
                               const Progress& progress);
 

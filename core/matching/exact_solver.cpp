@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "matching/adjacency.h"
 #include "matching/blossom.h"
 #include "matching/branch_and_bound.h"
 #include "matching/cliques.h"
@@ -102,51 +101,99 @@ MatchingResult stopped_at_root(double bound) {
   return r;
 }
 
-MatchingResult solve_component(const MatchingProblem& problem, Clock::time_point deadline,
+// The weight-free preprocessing of every component (steps 1 and 2).
+std::vector<ComponentStructure> prepare(const MatchingProblem& problem) {
+  std::vector<ComponentStructure> parts;
+  for (Component& component : split_components(problem)) {
+    ComponentStructure part;
+    part.incident = incident_edges(component.problem);
+    part.conflicts = conflicting_edges(component.problem);
+    part.unmatchable_ports = deficient_ports(
+        component.problem, std::vector<std::uint8_t>(component.problem.edges.size(), 1));
+    part.component = std::move(component);
+    parts.push_back(std::move(part));
+  }
+  return parts;
+}
+
+void set_weights(Component& component, const MatchingProblem& problem) {
+  for (std::size_t e = 0; e < component.edge_of.size(); ++e)
+    component.problem.edges[e].weight = problem.edges[component.edge_of[e]].weight;
+}
+
+bool same_graph(const MatchingProblem& a, const MatchingProblem& b) {
+  return a.is_virtual == b.is_virtual &&
+         std::equal(a.edges.begin(), a.edges.end(), b.edges.begin(), b.edges.end(),
+                    [](const MatchingEdge& x, const MatchingEdge& y) {
+                      return x.u == y.u && x.v == y.v;
+                    }) &&
+         std::equal(a.conflicts.begin(), a.conflicts.end(), b.conflicts.begin(), b.conflicts.end(),
+                    [](const ConflictPair& x, const ConflictPair& y) {
+                      return x.first == y.first && x.second == y.second;
+                    });
+}
+
+// Probing and the clique cover of the exclusion graph with the implied exclusions of probing
+// (larger cliques, stronger rows); the cover only if probing leaves P1 feasible.
+ComponentStructure::Root make_root(const ComponentStructure& part, const Adjacency& exclusive,
+                                   Probing probing) {
+  ComponentStructure::Root root;
+  root.probing = std::move(probing);
+  if (root.probing.infeasible) return root;
+  root.exclusion = with_pairs(exclusive, root.probing.implied);
+  root.cliques = clique_cover(root.exclusion, part.conflicts);
+  return root;
+}
+
+MatchingResult solve_component(ComponentStructure& part, Clock::time_point deadline,
                                const Progress& progress) {
-  const Adjacency incident = incident_edges(problem);
-  const std::vector<std::uint8_t> all(problem.edges.size(), 1);
-  std::vector<std::uint32_t> unmatchable = deficient_ports(problem, all);
-  if (!unmatchable.empty()) return infeasible(std::move(unmatchable));
-  const Adjacency conflicts = conflicting_edges(problem);
+  const MatchingProblem& problem = part.component.problem;
+  if (!part.unmatchable_ports.empty()) return infeasible(part.unmatchable_ports);
   // The cheapest matching without conflict constraints (Sec. 5.1): optimal when conflict-free,
   // a lower bound otherwise.
   std::vector<double> weights(problem.edges.size());
   for (std::size_t e = 0; e < weights.size(); ++e) weights[e] = problem.edges[e].weight;
-  const PortCover unconstrained = min_weight_port_cover(problem, weights, all);
+  const PortCover unconstrained =
+      min_weight_port_cover(problem, weights, std::vector<std::uint8_t>(weights.size(), 1));
   if (!unconstrained.exists) return infeasible();
-  if (conflict_free(conflicts, unconstrained.edges, problem.edges.size()))
+  if (conflict_free(part.conflicts, unconstrained.edges, problem.edges.size()))
     return optimal(problem, unconstrained.edges);
   const double cover_bound = objective_of(problem, unconstrained.edges);
 
-  const Adjacency exclusive = exclusive_edges(problem);
-  const Probing probing = probe(problem, incident, exclusive);
-  if (probing.infeasible) return infeasible();
+  if (!part.root) {
+    const Adjacency exclusive = exclusive_edges(problem);
+    Probing probing = probe(problem, part.incident, exclusive);
+    if (!probing.infeasible && Clock::now() >= deadline) return stopped_at_root(cover_bound);
+    part.root = make_root(part, exclusive, std::move(probing));
+  }
+  const ComponentStructure::Root& root = *part.root;
+  if (root.probing.infeasible) return infeasible();
   if (Clock::now() >= deadline) return stopped_at_root(cover_bound);
 
-  // The exclusion graph with the implied exclusions of probing: larger cliques, stronger rows.
-  const Adjacency exclusion = with_pairs(exclusive, probing.implied);
-  LpRelaxation lp(problem, incident, clique_cover(exclusion, conflicts));
+  LpRelaxation lp(problem, part.incident, root.cliques);
   for (std::uint32_t e = 0; e < problem.edges.size(); ++e)
-    if (probing.edges[e] != Fixed::free) {
-      const int value = probing.edges[e] == Fixed::one ? 1 : 0;
+    if (root.probing.edges[e] != Fixed::free) {
+      const int value = root.probing.edges[e] == Fixed::one ? 1 : 0;
       lp.set_bounds(e, value, value);
     }
   const auto seconds_left = [&] {
     return std::chrono::duration<double>(deadline - Clock::now()).count();
   };
-  const LpStatus status = lp.solve_with_cuts(exclusion, kInfinity, seconds_left(), kRootCutRounds);
+  const LpStatus status =
+      lp.solve_with_cuts(root.exclusion, kInfinity, seconds_left(), kRootCutRounds);
   if (status == LpStatus::infeasible) return infeasible();
   if (status == LpStatus::time_limit) return stopped_at_root(cover_bound);
   const double root_bound = std::max(cover_bound, lp.objective());
 
-  const IncumbentSearch heuristics(problem, incident, conflicts, exclusion, probing.edges);
+  const IncumbentSearch heuristics(problem, part.incident, part.conflicts, root.exclusion,
+                                   root.probing.edges);
   Incumbent start = heuristics.dive(order_by_relaxation(lp));
   Incumbent repaired = heuristics.lagrangian_repair(lp.edge_prices(), kRepairRounds);
   if (repaired.found && (!start.found || repaired.objective < start.objective))
     start = std::move(repaired);
-  const SearchResult search = branch_and_bound(problem, lp, exclusion, probing.edges, heuristics,
-                                               std::move(start), deadline, progress);
+  const SearchResult search =
+      branch_and_bound(problem, lp, root.exclusion, root.probing.edges, heuristics,
+                       std::move(start), root_bound, deadline, progress);
   return from_search(search, root_bound);
 }
 
@@ -164,16 +211,29 @@ void add_component(const Component& component, const MatchingResult& part, Match
 
 }  // namespace
 
+std::vector<ComponentStructure>* ExactSolverCache::structure_for(const MatchingProblem& problem) {
+  if (!filled_) {
+    graph_ = problem;
+    components_ = prepare(problem);
+    filled_ = true;
+  }
+  return same_graph(graph_, problem) ? &components_ : nullptr;
+}
+
 MatchingResult solve_exact(const MatchingProblem& problem, double time_limit,
-                           const Progress& progress) {
+                           const Progress& progress, ExactSolverCache* cache) {
   const Clock::time_point start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(std::min(time_limit, 1e9)));
-  const std::vector<Component> components = split_components(problem);
+  std::vector<ComponentStructure>* cached = cache ? cache->structure_for(problem) : nullptr;
+  std::vector<ComponentStructure> fresh;
+  if (!cached) fresh = prepare(problem);
   MatchingResult total;
   total.status = SolveStatus::optimal;
-  for (const Component& component : components) {
-    const MatchingResult part = solve_component(component.problem, deadline, progress);
+  for (ComponentStructure& structure : cached ? *cached : fresh) {
+    const Component& component = structure.component;
+    set_weights(structure.component, problem);
+    const MatchingResult part = solve_component(structure, deadline, progress);
     if (part.status == SolveStatus::infeasible) {
       MatchingResult r = infeasible();
       for (std::uint32_t v : part.unmatchable_ports)

@@ -11,15 +11,55 @@
 //  6. LP-based branch-and-bound with reduced-cost fixing closes the gap (branch_and_bound.h).
 // Deterministic: the same instance gives the same matching, whatever the machine, unless the time
 // limit stops it.
+//
+// Steps 1, 2, 4 and the clique cover of step 5 read no weight: an ExactSolverCache keeps them
+// between solves of one graph with its conflicts, so that a new alpha (SPEC "Data flow": only the
+// weights change) starts at step 3. The results are the same with or without it.
 #pragma once
 
+#include <cstdint>
+#include <optional>
+#include <vector>
+
 #include "base/progress.h"
+#include "matching/adjacency.h"
+#include "matching/cliques.h"
+#include "matching/components.h"
+#include "matching/probing.h"
 #include "matching/problem.h"
 #include "matching/result.h"
 
 namespace tessera::matching {
 
+// The weight-free preprocessing of one component.
+struct ComponentStructure {
+  Component component;  // its weights are set anew at every solve
+  Adjacency incident;
+  Adjacency conflicts;
+  std::vector<std::uint32_t> unmatchable_ports;  // Gallai-Edmonds D; empty: a cover exists
+  struct Root {
+    Probing probing;
+    Adjacency exclusion;  // exclusive pairs with the implied exclusions of probing
+    std::vector<Clique> cliques;
+  };
+  std::optional<Root> root;  // made by the first solve whose conflict-free cover has conflicts
+};
+
+// Holds the preprocessing of the first problem solved with it; a problem with other nodes, edges
+// or conflicts is solved without it (and leaves it as it is).
+class ExactSolverCache {
+ public:
+  // The preprocessing for `problem` with its weights, or null if the cache holds another graph.
+  std::vector<ComponentStructure>* structure_for(const MatchingProblem& problem);
+
+ private:
+  MatchingProblem graph_;  // the nodes, edges and conflicts it was made for (weights unused)
+  std::vector<ComponentStructure> components_;
+  bool filled_ = false;
+};
+
+// `cache` may be null.
 MatchingResult solve_exact(const MatchingProblem& problem, double time_limit,
-                           const Progress& progress);
+                           const Progress& progress, ExactSolverCache* cache = nullptr);
 
 }  // namespace tessera::matching

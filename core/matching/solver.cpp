@@ -5,7 +5,6 @@
 #include "base/error.h"
 #include "matching/adjacency.h"
 #include "matching/check.h"
-#include "matching/exact_solver.h"
 #include "matching/glpk_solver.h"
 #include "matching/incumbent.h"
 
@@ -68,11 +67,11 @@ const char* to_string(SolverKind kind) {
 }
 
 MatchingResult solve_matching(const MatchingProblem& problem, SolverKind kind, double time_limit,
-                              const Progress& progress) {
+                              const Progress& progress, ExactSolverCache* cache) {
   MatchingResult result;
   switch (kind) {
     case SolverKind::exact:
-      result = solve_exact(problem, time_limit, progress);
+      result = solve_exact(problem, time_limit, progress, cache);
       break;
     case SolverKind::glpk:
       result = solve_with_glpk(problem, GlpkConfig{}, time_limit, progress);

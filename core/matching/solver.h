@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/progress.h"
+#include "matching/exact_solver.h"
 #include "matching/problem.h"
 #include "matching/result.h"
 
@@ -20,8 +21,11 @@ SolverKind solver_kind_from_name(const std::string& name);
 const char* to_string(SolverKind kind);
 
 // Solves within time_limit seconds. The returned matching is verified by check_solution(); a
-// solver that returns an infeasible one is a bug and throws Error.
+// solver that returns an infeasible one is a bug and throws Error. `cache` (may be null) keeps the
+// exact solver's weight-free preprocessing for the next solve of the same graph (exact_solver.h);
+// the GLPK solvers do not use it.
 MatchingResult solve_matching(const MatchingProblem& problem, SolverKind kind, double time_limit,
-                              const Progress& progress = Progress());
+                              const Progress& progress = Progress(),
+                              ExactSolverCache* cache = nullptr);
 
 }  // namespace tessera::matching
