@@ -196,18 +196,17 @@ TEST(MatchingExact, IsDeterministic) {
 }
 
 // The alpha slider's re-solve: the weight-free preprocessing kept in a cache gives the very
-// results of a fresh solve for every new set of weights; a problem with another graph (one more
-// conflict pair, as the layout's loop rounds add) is solved without it and does not replace it.
+// results of a fresh solve for every new set of weights. Extra conflict pairs (as the layout's
+// loop rounds add) are solved through it to the same optimum; a problem whose conflicts do not
+// start with the cached ones, or whose extra pair joins two components, is solved without it.
 TEST(MatchingExact, ACacheReSolvesNewWeightsAsAFreshSolveDoes) {
-  SyntheticLayoutSpec spec = layout_spec(11, 8.0, 5.0);
-  const MatchingProblem base = synthetic_layout_instance(spec);
+  const MatchingProblem base = synthetic_layout_instance(layout_spec(11, 8.0, 5.0));
   ExactSolverCache cache;
   Random random(5);
   for (int round = 0; round < 6; ++round) {
     MatchingProblem p = base;
     if (round > 0)
       for (MatchingEdge& e : p.edges) e.weight *= 0.5 + random.unit();
-    if (round == 3) p.conflicts.push_back({p.conflicts[0].first, p.conflicts[1].second});
     const MatchingResult fresh = solve_matching(p, SolverKind::exact, 60.0);
     const MatchingResult cached = solve_matching(p, SolverKind::exact, 60.0, Progress(), &cache);
     const std::string what = "round " + std::to_string(round);
@@ -216,11 +215,44 @@ TEST(MatchingExact, ACacheReSolvesNewWeightsAsAFreshSolveDoes) {
     EXPECT_EQ(cached.edges, fresh.edges) << what;
     EXPECT_EQ(cached.objective, fresh.objective) << what;
     EXPECT_EQ(cached.nodes, fresh.nodes) << what;
+    // The optimum's own edges in conflict: the next round of the layout's loop conflicts.
+    for (std::size_t k = 1; k < fresh.edges.size(); k += 2)
+      p.conflicts.push_back({fresh.edges[k - 1], fresh.edges[k]});
+    ASSERT_NE(cache.structure_for(p), nullptr) << what;
+    const MatchingResult fresh_more = solve_matching(p, SolverKind::exact, 60.0);
+    const MatchingResult cached_more =
+        solve_matching(p, SolverKind::exact, 60.0, Progress(), &cache);
+    ASSERT_EQ(cached_more.status, fresh_more.status) << what;
+    if (fresh_more.status == SolveStatus::optimal) {
+      EXPECT_NEAR(cached_more.objective, fresh_more.objective, 1e-9 * fresh_more.objective) << what;
+      EXPECT_GT(cached_more.objective, cached.objective) << what;
+    }
   }
   ASSERT_NE(cache.structure_for(base), nullptr);
   MatchingProblem other = base;
   other.conflicts.pop_back();
   EXPECT_EQ(cache.structure_for(other), nullptr);
+}
+
+TEST(MatchingExact, ACacheSkipsExtraPairsAcrossComponents) {
+  PlantedSpec spec;
+  spec.ports = 12;
+  spec.conflicts = 10;
+  const MatchingProblem one = planted_instance(spec);
+  MatchingProblem two = one;  // a second copy of it, a second component
+  const auto nodes = static_cast<std::uint32_t>(one.node_count());
+  const auto edges = static_cast<std::uint32_t>(one.edges.size());
+  two.is_virtual.insert(two.is_virtual.end(), one.is_virtual.begin(), one.is_virtual.end());
+  for (const MatchingEdge& e : one.edges) two.edges.push_back({e.u + nodes, e.v + nodes, e.weight});
+  for (const ConflictPair& c : one.conflicts)
+    two.conflicts.push_back({c.first + edges, c.second + edges});
+  ExactSolverCache cache;
+  const MatchingResult r = solve_matching(two, SolverKind::exact, 10.0, Progress(), &cache);
+  ASSERT_EQ(r.status, SolveStatus::optimal);
+  two.conflicts.push_back({r.edges.front(), r.edges.back()});
+  EXPECT_EQ(cache.structure_for(two), nullptr);
+  const MatchingResult across = solve_matching(two, SolverKind::exact, 10.0, Progress(), &cache);
+  EXPECT_EQ(across.objective, solve_matching(two, SolverKind::exact, 10.0).objective);
 }
 
 TEST(MatchingExact, ATimeLimitReturnsTheBestWithAProvenBound) {

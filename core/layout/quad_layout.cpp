@@ -111,6 +111,9 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
   layout.solver = solver;
   std::vector<StageSeconds> seconds;
   StageClock clock(seconds);
+  // The loop rounds only add conflict pairs: one cache serves them all.
+  matching::ExactSolverCache own_cache;
+  if (!p1_cache) p1_cache = &own_cache;
   matching::MatchingProblem problem = matching_problem(graph.graph, alpha);
   lay_out(charts, graph, problem, limits, progress, p1_cache, clock, layout);
   for (int round = 0;

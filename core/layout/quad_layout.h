@@ -66,8 +66,9 @@ struct QuadLayout {
 LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& options,
                                const Progress& progress);
 
-// `p1_cache` (may be null) keeps the exact solver's weight-free preprocessing of the graph from
-// one alpha to the next (matching/exact_solver.h): pass the same one for every alpha of a graph.
+// `p1_cache` keeps the exact solver's weight-free preprocessing of the graph from one alpha to the
+// next (matching/exact_solver.h): pass the same one for every alpha of a graph. Without one, the
+// rounds of this call share their own.
 QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
                         matching::SolverKind solver, const Limits& limits, const Progress& progress,
                         matching::ExactSolverCache* p1_cache = nullptr);

@@ -121,13 +121,15 @@ void set_weights(Component& component, const MatchingProblem& problem) {
     component.problem.edges[e].weight = problem.edges[component.edge_of[e]].weight;
 }
 
-bool same_graph(const MatchingProblem& a, const MatchingProblem& b) {
+// The same nodes and edges, and a's conflict pairs are the first ones of b's.
+bool same_graph_up_to_extra_pairs(const MatchingProblem& a, const MatchingProblem& b) {
   return a.is_virtual == b.is_virtual &&
          std::equal(a.edges.begin(), a.edges.end(), b.edges.begin(), b.edges.end(),
                     [](const MatchingEdge& x, const MatchingEdge& y) {
                       return x.u == y.u && x.v == y.v;
                     }) &&
-         std::equal(a.conflicts.begin(), a.conflicts.end(), b.conflicts.begin(), b.conflicts.end(),
+         a.conflicts.size() <= b.conflicts.size() &&
+         std::equal(a.conflicts.begin(), a.conflicts.end(), b.conflicts.begin(),
                     [](const ConflictPair& x, const ConflictPair& y) {
                       return x.first == y.first && x.second == y.second;
                     });
@@ -143,6 +145,28 @@ ComponentStructure::Root make_root(const ComponentStructure& part, const Adjacen
   root.exclusion = with_pairs(exclusive, root.probing.implied);
   root.cliques = clique_cover(root.exclusion, part.conflicts);
   return root;
+}
+
+void ensure_root(ComponentStructure& part) {
+  if (part.root) return;
+  const Adjacency exclusive = exclusive_edges(part.component.problem);
+  part.root = make_root(part, exclusive, probe(part.component.problem, part.incident, exclusive));
+}
+
+// Conflict pairs (local edge indices) added to a component with its root.
+void add_pairs(ComponentStructure& part, const std::vector<ConflictPair>& extra) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> both_orders;
+  for (const ConflictPair& c : extra) {
+    part.component.problem.conflicts.push_back(c);
+    both_orders.emplace_back(c.first, c.second);
+    both_orders.emplace_back(c.second, c.first);
+  }
+  part.conflicts = with_pairs(part.conflicts, both_orders);
+  ComponentStructure::Root& root = *part.root;
+  if (root.probing.infeasible) return;
+  root.exclusion = with_pairs(root.exclusion, both_orders);
+  for (const ConflictPair& c : extra)
+    root.cliques.push_back({std::min(c.first, c.second), std::max(c.first, c.second)});
 }
 
 MatchingResult solve_component(ComponentStructure& part, Clock::time_point deadline,
@@ -215,9 +239,32 @@ std::vector<ComponentStructure>* ExactSolverCache::structure_for(const MatchingP
   if (!filled_) {
     graph_ = problem;
     components_ = prepare(problem);
+    component_of_edge_.resize(problem.edges.size());
+    local_edge_.resize(problem.edges.size());
+    for (std::uint32_t c = 0; c < components_.size(); ++c)
+      for (std::uint32_t e = 0; e < components_[c].component.edge_of.size(); ++e) {
+        component_of_edge_[components_[c].component.edge_of[e]] = c;
+        local_edge_[components_[c].component.edge_of[e]] = e;
+      }
     filled_ = true;
   }
-  return same_graph(graph_, problem) ? &components_ : nullptr;
+  if (!same_graph_up_to_extra_pairs(graph_, problem)) return nullptr;
+  if (problem.conflicts.size() == graph_.conflicts.size()) return &components_;
+  std::vector<std::vector<ConflictPair>> extra(components_.size());
+  for (std::size_t k = graph_.conflicts.size(); k < problem.conflicts.size(); ++k) {
+    const ConflictPair& c = problem.conflicts[k];
+    const std::uint32_t component = component_of_edge_[c.first];
+    if (component_of_edge_[c.second] != component) return nullptr;
+    extra[component].push_back({local_edge_[c.first], local_edge_[c.second]});
+  }
+  // The root of the cached graph first, so that the result does not depend on which solves
+  // happened to make it before.
+  for (std::size_t c = 0; c < extra.size(); ++c)
+    if (!extra[c].empty()) ensure_root(components_[c]);
+  with_extra_pairs_ = components_;
+  for (std::size_t c = 0; c < extra.size(); ++c)
+    if (!extra[c].empty()) add_pairs(with_extra_pairs_[c], extra[c]);
+  return &with_extra_pairs_;
 }
 
 MatchingResult solve_exact(const MatchingProblem& problem, double time_limit,

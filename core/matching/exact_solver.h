@@ -45,16 +45,21 @@ struct ComponentStructure {
   std::optional<Root> root;  // made by the first solve whose conflict-free cover has conflicts
 };
 
-// Holds the preprocessing of the first problem solved with it; a problem with other nodes, edges
-// or conflicts is solved without it (and leaves it as it is).
+// Holds the preprocessing of the first problem solved with it. A problem with the same nodes and
+// edges whose conflicts start with the same pairs and add some within components (the layout's
+// loop rounds, conflicts.h) gets it with the extra pairs added: probing's fixings and implied
+// exclusions still hold under more conflicts, and each extra pair joins the rows as its own
+// clique. Any other problem is solved without it (and leaves it as it is).
 class ExactSolverCache {
  public:
-  // The preprocessing for `problem` with its weights, or null if the cache holds another graph.
+  // The preprocessing for `problem`, or null if the cache holds another graph.
   std::vector<ComponentStructure>* structure_for(const MatchingProblem& problem);
 
  private:
   MatchingProblem graph_;  // the nodes, edges and conflicts it was made for (weights unused)
   std::vector<ComponentStructure> components_;
+  std::vector<std::uint32_t> component_of_edge_, local_edge_;
+  std::vector<ComponentStructure> with_extra_pairs_;  // for the last problem with extra pairs
   bool filled_ = false;
 };
 
