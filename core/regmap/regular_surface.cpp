@@ -53,11 +53,19 @@ Placement place_graph(const LineGraph& line, const JunctionOrder& order, Geometr
   return placement;
 }
 
+// The spine is tried on graphs up to this many junctions, the range where it is built to be free of
+// crossings (spine_base.h). Beyond it its tubes run the whole height past many levels: on the
+// catalog up to genus 29 it never crossed itself less than the relaxation there (the largest graph
+// it won on has 54 junctions), while its mesh is ten times larger (R14.1, 156 junctions: 4.9
+// million triangles) and placing it and searching it for crossings took most of the build time.
+constexpr std::size_t kSpineMaxJunctions = 64;
+
 // When the relaxed surface crosses itself, the spine placement replaces it if the graph has one and
 // its surface crosses itself less.
 void try_spine(const LineGraph& line, const JunctionOrder& order, const TubeShape& shape,
                const Limits& limits, const Progress& progress, Placement& chosen, Mesh& mesh,
                std::size_t& self_intersections) {
+  if (line.graph.node_count > kSpineMaxJunctions) return;
   std::optional<SymmetricPlacement> spine = spine_placement(line.graph, order, shape);
   if (!spine) return;
   Mesh other = tubify(spine->embedded, line, order, shape, limits.max_faces);
