@@ -98,7 +98,7 @@ constexpr const char* kSurfaceHelp =
     "                   (Sec. 9.4). Default: the symmetric base when the map has one, else the\n"
     "                   relaxation - replaced by the spine placement (junctions on an axis,\n"
     "                   tubes on cylinders) when the relaxed surface crosses itself and the\n"
-    "                   spine's crosses itself less\n"
+    "                   spine's crosses itself less (graphs of up to 64 junctions)\n"
     "  --json           print {genus, euler_characteristic, quarter_tubes, closed, oriented,\n"
     "                   self_intersections, relations_hold, seconds, ...}\n"
     "  --tube-radius R  tube radius, in tube lengths (default: 0.15, thinner for q > 6)\n"
