@@ -138,9 +138,9 @@ TEST(FieldDesign, SharpConstraintsOfAdjacentFacesNeverConflict) {
                                          [&](double a) { return std::abs(a) > sharp; });
   ASSERT_GT(sharp_edges * 10, static_cast<long>(c.edge_count()));  // over a tenth: noisy
 
-  const FaceConstraints constraints = feature_constraints(mesh, c, frames, sharp);
-  EXPECT_GT(constraints.count, 0u);  // consistent runs of sharp edges keep theirs
   const std::vector<double> kappa = connection_angles(mesh, c, frames);
+  const FaceConstraints constraints = feature_constraints(mesh, c, frames, kappa, sharp);
+  EXPECT_GT(constraints.count, 0u);  // consistent runs of sharp edges keep theirs
   for (Index h = 0; h < c.corner_count; ++h) {
     const Index f = c.face[h];
     const Index g = c.face[c.twin[h]];

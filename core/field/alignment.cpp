@@ -81,13 +81,15 @@ Eigen::Vector3d feature_tangent(const Mesh& mesh, const Connectivity& c,
 // sharp (a fifth of dragon's at 35 degrees), they do not.
 constexpr double kConflictingConstraint = std::numbers::pi / 6;
 
+// The rank of a face's constraint: a boundary edge's outranks every sharp edge (ranked by their
+// dihedral angles).
+constexpr double kBoundaryRank = 2 * std::numbers::pi;
+
 // Frees the faces whose sharp-edge constraint conflicts with a neighbour's (boundary constraints
 // stay): the smoothest field decides there instead of the noise.
-void free_conflicting_constraints(const Mesh& mesh, const Connectivity& c, const FaceFrames& frames,
-                                  const std::vector<std::uint8_t>& on_boundary,
-                                  FaceConstraints& constraints) {
-  const std::vector<double> kappa = connection_angles(mesh, c, frames);
-  std::vector<std::uint8_t> conflict(mesh.face_count(), 0);
+void free_conflicting_constraints(const Connectivity& c, const std::vector<double>& kappa,
+                                  const std::vector<double>& rank, FaceConstraints& constraints) {
+  std::vector<std::uint8_t> conflict(constraints.fixed.size(), 0);
   for (Index h = 0; h < c.corner_count; ++h) {
     if (c.is_boundary_halfedge(c.twin[h])) continue;
     const Index f = c.face[h];
@@ -97,14 +99,15 @@ void free_conflicting_constraints(const Mesh& mesh, const Connectivity& c, const
                                        std::numbers::pi / 2);
     if (std::abs(turn) > kConflictingConstraint) conflict[f] = conflict[g] = 1;
   }
-  for (Index f = 0; f < mesh.face_count(); ++f)
-    if (conflict[f] && !on_boundary[f]) constraints.fixed[f] = 0;
+  for (Index f = 0; f < conflict.size(); ++f)
+    if (conflict[f] && rank[f] < kBoundaryRank) constraints.fixed[f] = 0;
 }
 
 }  // namespace
 
 FaceConstraints feature_constraints(const Mesh& mesh, const Connectivity& c,
-                                    const FaceFrames& frames, double sharp_radians) {
+                                    const FaceFrames& frames, const std::vector<double>& kappa,
+                                    double sharp_radians) {
   const std::vector<double> dihedral = dihedral_angles(mesh, c);
   const std::vector<std::uint8_t> sharp = feature_edges(c, dihedral, sharp_radians);
   FaceConstraints constraints;
@@ -115,7 +118,7 @@ FaceConstraints feature_constraints(const Mesh& mesh, const Connectivity& c,
   for (Index h = 0; h < c.corner_count; ++h) {
     const Index e = c.edge[h];
     if (!c.is_boundary_edge(e) && !sharp[e]) continue;
-    const double r = c.is_boundary_edge(e) ? 2 * std::numbers::pi : std::abs(dihedral[e]);
+    const double r = c.is_boundary_edge(e) ? kBoundaryRank : std::abs(dihedral[e]);
     const Index f = c.face[h];
     if (constraints.fixed[f] && r <= rank[f]) continue;
     constraints.fixed[f] = 1;
@@ -124,9 +127,7 @@ FaceConstraints feature_constraints(const Mesh& mesh, const Connectivity& c,
         frames.angle(f, c.is_boundary_edge(e) ? halfedge_vector(mesh, c, h)
                                               : feature_tangent(mesh, c, sharp, h));
   }
-  std::vector<std::uint8_t> on_boundary(mesh.face_count(), 0);
-  for (Index f = 0; f < mesh.face_count(); ++f) on_boundary[f] = rank[f] == 2 * std::numbers::pi;
-  free_conflicting_constraints(mesh, c, frames, on_boundary, constraints);
+  free_conflicting_constraints(c, kappa, rank, constraints);
   for (std::uint8_t fixed : constraints.fixed) constraints.count += fixed;
   return constraints;
 }

@@ -24,9 +24,11 @@ struct FaceConstraints {
   std::size_t count = 0;            // faces with fixed == 1
 };
 
-// Faces on boundary edges and on edges whose |dihedral angle| exceeds sharp_radians.
+// Faces on boundary edges and on edges whose |dihedral angle| exceeds sharp_radians; `kappa` is
+// the connection (face_frames.h), used to compare the constraints of neighbouring faces.
 FaceConstraints feature_constraints(const Mesh& mesh, const Connectivity& connectivity,
-                                    const FaceFrames& frames, double sharp_radians);
+                                    const FaceFrames& frames, const std::vector<double>& kappa,
+                                    double sharp_radians);
 
 // Per face ((k1 - k2) / 2)^2 exp(4 i phi) of the shape operator (k1 >= k2 along phi), estimated
 // from the change of the vertex normals along the edges, divided by its mean magnitude over the

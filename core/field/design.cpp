@@ -146,14 +146,14 @@ CrossField design_cross_field(const Mesh& mesh, const Connectivity& c, const Fac
     throw InputError("the curvature blend weight must be positive, got " +
                      std::to_string(options.curvature_weight));
   progress.step("field", 0);
+  const std::vector<double> kappa = connection_angles(mesh, c, frames);
   const FaceConstraints constraints =
-      feature_constraints(mesh, c, frames, options.sharp_degrees * std::numbers::pi / 180);
+      feature_constraints(mesh, c, frames, kappa, options.sharp_degrees * std::numbers::pi / 180);
   const bool curvature = options.align == FieldAlignment::curvature;
   const std::vector<std::complex<double>> targets =
       curvature ? curvature_targets(mesh, frames) : std::vector<std::complex<double>>{};
   const std::vector<std::uint8_t> unconstrained =
       unconstrained_faces(mesh, c, constraints, curvature);
-  const std::vector<double> kappa = connection_angles(mesh, c, frames);
   const PowerSystem s =
       assemble(mesh, c, frames, kappa,
                {constraints, targets, curvature ? options.curvature_weight : 0.0, unconstrained});
