@@ -9,6 +9,7 @@
 #include "layout/metrics.h"
 #include "layout/p1.h"
 #include "layout/patches.h"
+#include "layout/twin_edges.h"
 #include "matching/blossom.h"
 #include "mesh/geometry.h"
 
@@ -70,6 +71,7 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
   std::set_union(in_frames.begin(), in_frames.end(), on_surface.begin(), on_surface.end(),
                  std::back_inserter(result.graph.conflicts));
   result.conflicts_on_surface_only = result.graph.conflicts.size() - in_frames.size();
+  result.twin_edges = merge_twin_edges(result.graph, result.arcs);
   clock.stage_done("conflicts");
   return result;
 }
@@ -83,6 +85,7 @@ void lay_out(const Charts& charts, const LayoutGraph& graph,
              QuadLayout& layout) {
   layout.matching = matching::solve_matching(problem, layout.solver, limits.max_solve_seconds,
                                              progress, p1_cache);
+  ++layout.rounds;
   clock.stage_done("P1");
   layout.arcs.clear();
   for (std::uint32_t e : layout.matching.edges) layout.arcs.push_back(graph.arcs[e]);

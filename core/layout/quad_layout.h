@@ -3,7 +3,7 @@
 //  1. build_layout_graph(): ports, motorcycle growing to L_max = length_factor * diameter / h
 //     (Sec. 6.9, the diameter taken as the bounding-box diagonal), the edges whose hypotenuse is
 //     straight, and, if G has no perfect matching, growing on with L_max doubled (Sec. 5.1); then
-//     the conflicts I (Sec. 4.6);
+//     the conflicts I (Sec. 4.6), and one edge kept of each pair of twins (twin_edges.h);
 //  2. solve_layout(): program P1 with w = L_base + alpha L_height (Ch. 5) by a solver of
 //     core/matching,
 //     the chosen edges traced as arcs, the mesh refined along them, patches, the validity check,
@@ -45,6 +45,7 @@ struct LayoutGraph {
   std::vector<Arc> arcs;         // of every edge, in edge order
   std::size_t curved_edges = 0;  // candidates dropped: their hypotenuse is not straight
   std::size_t conflicts_on_surface_only = 0;     // illegal pairs no frame of Algorithm 1 held
+  std::size_t twin_edges = 0;                    // removed as twins of kept edges (twin_edges.h)
   int length_doublings = 0;                      // of L_max, until G had a perfect matching
   std::vector<std::uint32_t> unmatchable_ports;  // no matching of G covers them (empty: fine)
   std::vector<StageSeconds> seconds;
@@ -60,6 +61,7 @@ struct QuadLayout {
   double angle_rsd = 0;  // percent, over all patch corners (parameter space)
   // Pairs of chosen arcs closing loops (conflicts.h, loop_pairs()) added while the check failed.
   std::size_t loop_conflicts = 0;
+  int rounds = 0;  // solves of P1: the first and the loop rounds after it
   std::vector<StageSeconds> seconds;
 };
 
