@@ -1,6 +1,7 @@
 #include "matching/branch_and_bound.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -20,11 +21,56 @@ struct Fix {
   std::int8_t value = 0;
 };
 
+// The branching that made a node: its parent's bound and the branched edge's value there.
+struct Branch {
+  std::int64_t edge = -1;  // -1 at the root
+  std::int8_t value = 0;
+  double parent_bound = 0.0;
+  double parent_value = 0.0;
+};
+
 struct Node {
   std::vector<Fix> fixes;  // on top of the root's bounds
   double bound = -kInfinity;
   LpBasis basis;
   std::uint64_t order = 0;
+  Branch branch;
+};
+
+// Pseudocosts: per edge and direction, the mean bound gain per unit of change of x_e seen when
+// branching on it. An edge not branched on yet counts with the mean over all edges.
+class Pseudocosts {
+ public:
+  explicit Pseudocosts(std::size_t edges) : sum_(edges, {0.0, 0.0}), count_(edges, {0, 0}) {}
+
+  void record(const Branch& branch, double bound) {
+    if (branch.edge < 0) return;
+    const double change = branch.value ? 1.0 - branch.parent_value : branch.parent_value;
+    if (!(change > 0) || !std::isfinite(bound)) return;
+    const double gain = std::max(0.0, bound - branch.parent_bound) / change;
+    const int d = branch.value;
+    sum_[branch.edge][d] += gain;
+    ++count_[branch.edge][d];
+    total_[d] += gain;
+    ++total_count_[d];
+  }
+
+  // The product score of branching on e at value x (larger is better).
+  double score(std::uint32_t e, double x) const {
+    const double down = mean(e, 0) * x, up = mean(e, 1) * (1.0 - x);
+    return std::max(down, kMinGain) * std::max(up, kMinGain);
+  }
+
+ private:
+  static constexpr double kMinGain = 1e-6;
+  double mean(std::uint32_t e, int d) const {
+    if (count_[e][d] > 0) return sum_[e][d] / count_[e][d];
+    return total_count_[d] > 0 ? total_[d] / total_count_[d] : 1.0;
+  }
+  std::vector<std::array<double, 2>> sum_;
+  std::vector<std::array<std::uint32_t, 2>> count_;
+  std::array<double, 2> total_{0.0, 0.0};
+  std::array<std::uint32_t, 2> total_count_{0, 0};
 };
 
 struct LeastBound {
@@ -47,7 +93,8 @@ class Search {
         root_bound_(root_bound),
         deadline_(deadline),
         progress_(progress),
-        root_(root.size()) {
+        root_(root.size()),
+        pseudocosts_(root.size()) {
     for (std::size_t e = 0; e < root.size(); ++e) root_[e] = static_cast<std::int8_t>(root[e]);
     current_ = root_;
   }
@@ -119,14 +166,14 @@ class Search {
     }
   }
 
-  // The fractional edge to branch on: the most fractional one, the larger value on ties.
+  // The fractional edge to branch on: the best pseudocost score, the lowest index on ties.
   std::int64_t branching_edge() const {
     const std::vector<double>& x = lp_.values();
     std::int64_t best = -1;
     double best_score = -1.0;
     for (std::uint32_t e = 0; e < x.size(); ++e) {
       if (x[e] < kIntegral || x[e] > 1.0 - kIntegral) continue;
-      const double score = std::min(x[e], 1.0 - x[e]) + 1e-3 * x[e];
+      const double score = pseudocosts_.score(e, x[e]);
       if (score > best_score) {
         best = e;
         best_score = score;
@@ -170,7 +217,12 @@ class Search {
         stopped_bound = node.bound;
         return false;
       }
-      if (status != LpStatus::optimal) return true;
+      if (status != LpStatus::optimal) {
+        // A child cut off or infeasible lifted the bound at least to the incumbent.
+        pseudocosts_.record(node.branch, cutoff());
+        return true;
+      }
+      pseudocosts_.record(node.branch, lp_.objective());
       node.bound = std::max(node.bound, lp_.objective());
       // The simplex's cutoff stops only on a bound strictly above it: a fractional optimum as
       // dear as the incumbent ends here too, or its degenerate subtree is searched in vain.
@@ -181,9 +233,11 @@ class Search {
         take_integral_solution();
         return true;
       }
-      Node sibling{node.fixes, node.bound, lp_.basis(), ++created_};
+      const double value = lp_.values()[e];
+      Node sibling{node.fixes, node.bound, lp_.basis(), ++created_, {e, 0, node.bound, value}};
       sibling.fixes.push_back({static_cast<std::uint32_t>(e), 0});
       open_.push(std::move(sibling));
+      node.branch = {e, 1, node.bound, value};
       node.fixes.push_back({static_cast<std::uint32_t>(e), 1});
       set(static_cast<std::uint32_t>(e), 1);
     }
@@ -200,6 +254,7 @@ class Search {
   std::vector<std::int8_t> root_;     // per edge: -1 free, else the value preprocessing fixed
   std::vector<std::int8_t> current_;  // per edge: -1 free, else the value it is fixed to now
   std::priority_queue<Node, std::vector<Node>, LeastBound> open_;
+  Pseudocosts pseudocosts_;
   std::uint64_t nodes_ = 0, created_ = 0;
   double last_report_ = 0.0;
 };

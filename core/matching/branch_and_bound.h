@@ -3,9 +3,10 @@
 // Each node solves the relaxation (lp_relaxation.h) with the dual simplex method from its parent's
 // basis and is pruned when its bound reaches the incumbent. Edges whose reduced cost alone lifts
 // the bound to the incumbent are fixed to 0 (or to 1) in the node's subtree (reduced-cost fixing).
-// A fractional edge e is branched on: x_e = 1 first (it settles the edge's two ports and every
-// conflict pair it is in), explored depth-first until that dive ends, then x_e = 0; the next dive
-// starts at the open node of least bound. New incumbents are improved by local search.
+// A fractional edge e is branched on, the one whose pseudocosts (the mean bound gains per unit of
+// change seen so far when branching on it, down and up) have the largest product: x_e = 1 first
+// (it settles the edge's two ports and every conflict pair it is in), explored depth-first until
+// that dive ends, then x_e = 0; the next dive starts at the open node of least bound. New incumbents are improved by local search.
 // The search ends when no open node can beat the incumbent (optimal; the gap is closed) or at the
 // deadline, with the least open bound as the proven lower bound.
 #pragma once

@@ -215,6 +215,7 @@ MatchingResult solve_component(ComponentStructure& part, Clock::time_point deadl
   Incumbent repaired = heuristics.lagrangian_repair(lp.edge_prices(), kRepairRounds);
   if (repaired.found && (!start.found || repaired.objective < start.objective))
     start = std::move(repaired);
+  lp.drop_slack_rows();
   const SearchResult search =
       branch_and_bound(problem, lp, root.exclusion, root.probing.edges, heuristics,
                        std::move(start), root_bound, deadline, progress);

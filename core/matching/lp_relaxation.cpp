@@ -95,17 +95,79 @@ LpStatus LpRelaxation::solve(double cutoff, double seconds) {
 LpStatus LpRelaxation::solve_with_cuts(const Adjacency& exclusion, double cutoff, double seconds,
                                        int rounds) {
   const auto start = std::chrono::steady_clock::now();
+  const auto seconds_left = [&] {
+    return seconds -
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   LpStatus status = solve(cutoff, seconds);
-  for (int round = 0; status == LpStatus::optimal && round < rounds; ++round) {
-    const std::size_t odd_sets = add_violated_odd_sets();
-    const std::vector<Clique> cliques = violated_cliques(exclusion, values_, kCutTolerance);
-    if (odd_sets == 0 && cliques.empty()) break;
-    add_cliques(cliques);
-    const double spent =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    status = solve(cutoff, seconds - spent);
+  int round = 0;
+  while (status == LpStatus::optimal) {
+    if (add_violated_pooled_rows() == 0) {
+      if (round == rounds) break;
+      ++round;
+      const std::size_t odd_sets = add_violated_odd_sets();
+      const std::vector<Clique> cliques = violated_cliques(exclusion, values_, kCutTolerance);
+      if (odd_sets == 0 && cliques.empty()) break;
+      add_cliques(cliques);
+    }
+    status = solve(cutoff, seconds_left());
   }
   return status;
+}
+
+void LpRelaxation::drop_slack_rows() {
+  glp_prob* lp = lp_.get();
+  const int rows = glp_get_num_rows(lp);
+  const int first_cut = static_cast<int>(problem_.node_count()) + 1;  // after the degree rows
+  std::vector<std::uint8_t> is_clique(static_cast<std::size_t>(rows) + 1, 0);
+  for (const auto& [row, clique] : clique_rows_) is_clique[static_cast<std::size_t>(row)] = 1;
+  std::vector<int> dropped{0};  // GLPK's 1-based list
+  std::vector<int> new_number(static_cast<std::size_t>(rows) + 1, 0);
+  int kept = 0;
+  std::vector<int> index(glp_get_num_cols(lp) + 1);
+  for (int i = 1; i <= rows; ++i) {
+    const double slack = glp_get_row_ub(lp, i) - glp_get_row_prim(lp, i);
+    if (i < first_cut || glp_get_row_stat(lp, i) != GLP_BS || slack <= kCutTolerance) {
+      new_number[static_cast<std::size_t>(i)] = ++kept;
+      continue;
+    }
+    PooledRow row;
+    row.bound = glp_get_row_ub(lp, i);
+    row.clique = is_clique[static_cast<std::size_t>(i)] != 0;
+    const int length = glp_get_mat_row(lp, i, index.data(), nullptr);
+    for (int k = 1; k <= length; ++k) row.edges.push_back(static_cast<std::uint32_t>(index[k] - 1));
+    std::sort(row.edges.begin(), row.edges.end());
+    pool_.push_back(std::move(row));
+    dropped.push_back(i);
+  }
+  if (dropped.size() == 1) return;
+  glp_del_rows(lp, static_cast<int>(dropped.size()) - 1, dropped.data());
+  std::vector<std::pair<int, Clique>> clique_rows;
+  for (auto& [row, clique] : clique_rows_)
+    if (const int renumbered = new_number[static_cast<std::size_t>(row)]; renumbered > 0)
+      clique_rows.emplace_back(renumbered, std::move(clique));
+  clique_rows_ = std::move(clique_rows);
+}
+
+std::size_t LpRelaxation::add_violated_pooled_rows() {
+  std::size_t added = 0;
+  for (std::size_t k = 0; k < pool_.size();) {
+    double sum = 0.0;
+    for (std::uint32_t e : pool_[k].edges) sum += values_[e];
+    if (sum <= pool_[k].bound + kCutTolerance) {
+      ++k;
+      continue;
+    }
+    if (pool_[k].clique) {
+      add_clique_row(pool_[k].edges);
+    } else {
+      add_row(lp_.get(), columns_of(pool_[k].edges), GLP_UP, pool_[k].bound);
+    }
+    pool_[k] = std::move(pool_.back());
+    pool_.pop_back();
+    ++added;
+  }
+  return added;
 }
 
 void LpRelaxation::read_solution() {
@@ -121,10 +183,12 @@ void LpRelaxation::read_solution() {
 }
 
 void LpRelaxation::add_cliques(const std::vector<Clique>& cliques) {
-  for (const Clique& clique : cliques) {
-    add_row(lp_.get(), columns_of(clique), GLP_UP, 1.0);
-    clique_rows_.emplace_back(glp_get_num_rows(lp_.get()), clique);
-  }
+  for (const Clique& clique : cliques) add_clique_row(clique);
+}
+
+void LpRelaxation::add_clique_row(const Clique& clique) {
+  add_row(lp_.get(), columns_of(clique), GLP_UP, 1.0);
+  clique_rows_.emplace_back(glp_get_num_rows(lp_.get()), clique);
 }
 
 std::vector<double> LpRelaxation::edge_prices() const {

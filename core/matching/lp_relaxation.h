@@ -49,8 +49,17 @@ class LpRelaxation {
   void add_cliques(const std::vector<Clique>& cliques);
 
   // solve(), then up to `rounds` times: add the violated clique rows of `exclusion` (cliques.h)
-  // and odd-set rows, and solve again; stops early when none is violated.
+  // and odd-set rows, and solve again; stops early when none is violated. Rows of the pool
+  // (drop_slack_rows()) that the solution violates come back first, however many rounds that
+  // takes: an optimum returned satisfies every row the relaxation ever had, so an integral one
+  // is a matching without conflicts.
   LpStatus solve_with_cuts(const Adjacency& exclusion, double cutoff, double seconds, int rounds);
+
+  // Moves the clique and odd-set rows that are slack at the current optimum into the pool: the
+  // LP the search re-solves at every node shrinks to the rows that bind (on fertility's P1 about
+  // 700 of 3,300), each node's dual simplex gets that much cheaper, and a pooled row is added back
+  // when a node's solution violates it. Call between solves, before any basis() is kept.
+  void drop_slack_rows();
 
   // Odd sets S of ports (no virtual port) spanned by a component of the fractional edges whose
   // row x(E(S)) <= (|S| - 1) / 2 the current solution violates; adds their rows. Returns how many.
@@ -65,9 +74,20 @@ class LpRelaxation {
   struct Deleter {
     void operator()(glp_prob* p) const;
   };
+  // A row sum_{e in edges} x_e <= bound out of the LP.
+  struct PooledRow {
+    std::vector<std::uint32_t> edges;
+    double bound = 1.0;
+    bool clique = true;
+  };
+  // Adds the pooled rows the current solution violates, takes them out of the pool; how many.
+  std::size_t add_violated_pooled_rows();
+  void add_clique_row(const Clique& clique);
+
   const MatchingProblem& problem_;
   std::unique_ptr<glp_prob, Deleter> lp_;
   std::vector<std::pair<int, Clique>> clique_rows_;  // GLPK row (1-based) and its clique
+  std::vector<PooledRow> pool_;
   double objective_ = 0.0;
   std::vector<double> values_, reduced_;
 };
