@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numbers>
 
 #include <Eigen/Geometry>
@@ -34,6 +33,10 @@ class Checker {
       problem(std::string("the refined mesh is not a manifold: ") + e.what());
       return std::move(result_);
     }
+    reached_.assign(mesh_.face_count(), -1);
+    leaving_patch_.assign(mesh_.vertex_count(), -1);
+    leaving_.assign(mesh_.vertex_count(), kNoIndex);
+    walked_.assign(c_.halfedge_count(), -1);
     find_nodes();
     std::vector<std::vector<Index>> faces(result_.patch_count);
     for (Index f = 0; f < mesh_.face_count(); ++f) faces[patch_[f]].push_back(f);
@@ -93,18 +96,17 @@ class Checker {
       const std::vector<Index> outgoing = outgoing_halfedges(c_, v);
       const std::size_t n = outgoing.size();
       if (n == 0) continue;
-      std::map<std::int32_t, int> runs_of;
-      std::size_t runs = 0;
+      std::vector<std::int32_t> run_sides;  // the side of each run of faces around v
       for (std::size_t k = 0; k < n; ++k) {
         const std::int32_t here = side_of(outgoing[k]);
-        if (here != side_of(outgoing[(k + 1) % n])) {
-          ++runs;
-          ++runs_of[here];
-        }
+        if (here != side_of(outgoing[(k + 1) % n])) run_sides.push_back(here);
       }
-      for (const auto& [side, count] : runs_of)
-        if (side >= 0 && count > 1)
-          problem("patch " + std::to_string(side) + " touches itself at vertex " +
+      const std::size_t runs = run_sides.size();
+      std::sort(run_sides.begin(), run_sides.end());
+      for (std::size_t k = 0; k + 1 < runs; ++k)
+        if (run_sides[k] >= 0 && run_sides[k] == run_sides[k + 1] &&
+            (k + 2 == runs || run_sides[k + 2] != run_sides[k]))
+          problem("patch " + std::to_string(run_sides[k]) + " touches itself at vertex " +
                   std::to_string(v));
       bool node = runs >= 3;
       if (runs == 2 && c_.is_boundary_vertex(v))
@@ -114,22 +116,22 @@ class Checker {
     }
   }
 
-  std::size_t components(const std::vector<Index>& faces, std::int32_t p) const {
-    std::map<Index, bool> seen;
-    for (Index f : faces) seen[f] = false;
+  // Per face: the patch whose components() walk has reached it (each patch walks its own faces).
+  std::size_t components(const std::vector<Index>& faces, std::int32_t p) {
     std::size_t count = 0;
     for (Index start : faces) {
-      if (seen[start]) continue;
+      if (reached_[start] == p) continue;
       ++count;
       std::vector<Index> stack{start};
-      seen[start] = true;
+      reached_[start] = p;
       while (!stack.empty()) {
         const Index f = stack.back();
         stack.pop_back();
         for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h) {
           const Index t = c_.twin[h];
-          if (c_.is_boundary_halfedge(t) || patch_[c_.face[t]] != p || seen[c_.face[t]]) continue;
-          seen[c_.face[t]] = true;
+          if (c_.is_boundary_halfedge(t) || patch_[c_.face[t]] != p || reached_[c_.face[t]] == p)
+            continue;
+          reached_[c_.face[t]] = p;
           stack.push_back(c_.face[t]);
         }
       }
@@ -154,23 +156,29 @@ class Checker {
   }
 
   // The boundary loops of patch p, each as its halfedges in order (counterclockwise around p).
-  std::vector<std::vector<Index>> boundary_loops(const std::vector<Index>& faces,
-                                                 std::int32_t p) const {
-    std::map<Index, Index> leaving;  // vertex -> the boundary halfedge of p leaving it
+  // Each loop starts at its least vertex; where p touches itself at a vertex, the walk leaves it
+  // along the boundary halfedge met last.
+  std::vector<std::vector<Index>> boundary_loops(const std::vector<Index>& faces, std::int32_t p) {
+    std::vector<Index> starts;  // vertices with a boundary halfedge of p leaving them
     for (Index f : faces)
-      for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h)
-        if (on_patch_boundary(h, p)) leaving[c_.from_vertex(h)] = h;
+      for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h) {
+        if (!on_patch_boundary(h, p)) continue;
+        const Index v = c_.from_vertex(h);
+        if (leaving_patch_[v] != p) starts.push_back(v);
+        leaving_patch_[v] = p;
+        leaving_[v] = h;
+      }
+    std::sort(starts.begin(), starts.end());
     std::vector<std::vector<Index>> loops;
-    std::map<Index, bool> walked;
-    for (const auto& [vertex, first] : leaving) {
-      if (walked[first]) continue;
+    for (Index vertex : starts) {
+      if (walked_[leaving_[vertex]] == p) continue;
       loops.emplace_back();
-      for (Index h = first; !walked[h];) {
-        walked[h] = true;
+      for (Index h = leaving_[vertex]; walked_[h] != p;) {
+        walked_[h] = p;
         loops.back().push_back(h);
-        auto next = leaving.find(c_.to_vertex[h]);
-        if (next == leaving.end()) break;
-        h = next->second;
+        const Index next = c_.to_vertex[h];
+        if (leaving_patch_[next] != p) break;
+        h = leaving_[next];
       }
     }
     return loops;
@@ -214,6 +222,11 @@ class Checker {
   const std::vector<std::int32_t>& patch_;
   Connectivity c_;
   std::vector<bool> is_node_;
+  // Scratch of the per-patch walks, marked with the patch id so that no patch clears them.
+  std::vector<std::int32_t> reached_;        // per face (components())
+  std::vector<std::int32_t> leaving_patch_;  // per vertex: p if leaving_ holds p's halfedge
+  std::vector<Index> leaving_;               // per vertex (boundary_loops())
+  std::vector<std::int32_t> walked_;         // per halfedge (boundary_loops())
   LayoutCheck result_;
 };
 
