@@ -34,6 +34,9 @@ void print_layout_help() {
       "  --alpha A            edge weight L_base + A * L_height (default 5; 0 gives the coarsest\n"
       "                       layout, larger values follow the field more closely)\n"
       "  --rho R              spiral test threshold (default 10)\n"
+      "  --length-factor F    separatrices grow to L_max = F * diameter / h (default 3, Sec. "
+      "6.8);\n"
+      "                       doubled while G has no perfect matching\n"
       "  --solver S           P1 solver: exact (default), glpk (the plain model) or glpk-tuned\n"
       "  --h REL              parameter unit as a fraction of the bounding-box diagonal (0.01)\n"
       "  -o FILE.glb          the refined mesh coloured by patch with a per-face _PATCH\n"
@@ -62,6 +65,9 @@ layout::LayoutOptions layout_options(const ParsedArgs& parsed) {
   layout::LayoutOptions options;
   options.rho = parsed.number("--rho", options.rho);
   if (!(options.rho > 1)) throw UsageError("--rho expects a number above 1");
+  options.length_factor = parsed.number("--length-factor", options.length_factor);
+  if (!(options.length_factor > 0) || options.length_factor > 1e3)
+    throw UsageError("--length-factor expects a number in (0, 1000]");
   Limits& limits = options.limits;
   limits.max_trace_steps = parsed.count("--max-trace-steps", limits.max_trace_steps);
   limits.max_trace_seconds = parsed.number("--max-trace-seconds", limits.max_trace_seconds);
@@ -110,8 +116,8 @@ void export_p1(const std::string& dir, const std::string& mesh_path, const layou
 int layout_command(const Args& args) {
   std::set<std::string> values = mesh_input_options();
   values.merge(field_input_options());
-  values.insert({"--alpha", "--rho", "--h", "-o", "--ply", "--solver", "--export-p1",
-                 "--max-trace-steps", "--max-trace-seconds", "--max-solve-seconds"});
+  values.insert({"--alpha", "--rho", "--length-factor", "--h", "-o", "--ply", "--solver",
+                 "--export-p1", "--max-trace-steps", "--max-trace-seconds", "--max-solve-seconds"});
   const ParsedArgs parsed = parse_args(args, values, {"--json", "--help", "-h"}, "layout");
   if (parsed.has("--help") || parsed.has("-h")) {
     print_layout_help();
