@@ -3,6 +3,8 @@
 // codes for bad options.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "cli_run.h"
@@ -35,6 +37,14 @@ TEST(CliLayout, WritesJsonPlyAndGlb) {
   EXPECT_GT(json["graph_edges"].get<int>(), json["ports"].get<int>());
   for (const char* stage : {"separatrices", "conflicts", "P1", "layout", "check"})
     EXPECT_TRUE(json["seconds"].contains(stage)) << stage;
+  // L_max scales with --length-factor (before any doubling, Sec. 5.1).
+  const auto shorter = run_cli("layout --json " + quoted(path) + " --length-factor 1.5");
+  ASSERT_EQ(shorter.exit_code, 0) << shorter.out;
+  const auto short_json = nlohmann::json::parse(shorter.out);
+  EXPECT_NEAR(short_json["length_limit"].get<double>() *
+                  std::pow(2.0, json["length_doublings"].get<int>() -
+                                    short_json["length_doublings"].get<int>()),
+              json["length_limit"].get<double>() / 2, 1e-9 * json["length_limit"].get<double>());
 
   const LoadedMesh refined = load_mesh_file(ply);
   const auto& patch = refined.mesh.face_attributes.at("patch");
@@ -53,6 +63,8 @@ TEST(CliLayout, BadOptionsExitWithTwo) {
   EXPECT_EQ(run_cli("layout " + quoted(path) + " --alpha -1").exit_code, 2);
   EXPECT_EQ(run_cli("layout " + quoted(path) + " --rho 0.5").exit_code, 2);
   EXPECT_EQ(run_cli("layout " + quoted(path) + " --max-solve-seconds 0").exit_code, 2);
+  EXPECT_EQ(run_cli("layout " + quoted(path) + " --length-factor 0").exit_code, 2);
+  EXPECT_EQ(run_cli("layout " + quoted(path) + " --length-factor nan").exit_code, 2);
   EXPECT_EQ(run_cli("layout").exit_code, 2);
   EXPECT_EQ(run_cli("layout --help").exit_code, 0);
   const auto limited = run_cli("layout " + quoted(path) + " --max-trace-steps 10", true);
