@@ -49,7 +49,7 @@ void print_layout_help() {
       "                       patches, angle_rsd (percent), valid, objective, seconds (per\n"
       "                       stage), and alpha, ports, virtual_ports, nodes, arcs,\n"
       "                       solver, matching_status, lower_bound, curved_edges,\n"
-      "                       conflicts_on_surface_only, twin_edges, loop_conflicts,\n"
+      "                       twin_edges, loop_conflicts,\n"
       "                       length_limit, length_doublings, unmatchable_ports,\n"
       "                       average_separatrix_length, problems\n"
       "  --max-trace-steps N  faces crossed by all separatrices together (default 20000000)\n"

@@ -69,7 +69,11 @@ TEST_P(FlatGridGrowth, TwoSingularPointsCrossExactlyTwice) {
     EXPECT_EQ(port_direction(u_at_a ? e.v : e.u), std::pair(-1, 0));
     EXPECT_NE(g.ports.ports[e.u].singular_point, g.ports.ports[e.v].singular_point);
   }
-  EXPECT_TRUE(layout::illegal_crossings(g, Progress()).empty());
+  const layout::Charts charts = p.charts();
+  PortGraph with_arcs = g;
+  const std::vector<layout::Arc> arcs = layout::keep_edges_with_arcs(charts, with_arcs);
+  EXPECT_EQ(with_arcs.edges.size(), g.edges.size());
+  EXPECT_TRUE(layout::illegal_crossings(charts, with_arcs, arcs, Progress()).empty());
 }
 
 // L_max below the crossings finds none; growing on to a larger L_max finds exactly what one run
@@ -149,12 +153,17 @@ TEST(Growth, DeterministicGraphAndConflicts) {
     EXPECT_EQ(a.edges[e].v, b.edges[e].v);
     EXPECT_EQ(a.edges[e].base, b.edges[e].base);
   }
-  const auto conflicts = layout::illegal_crossings(a, Progress());
-  EXPECT_EQ(conflicts, layout::illegal_crossings(b, Progress()));
+  PortGraph arcs_a = a, arcs_b = b;
+  const layout::Charts charts = p.charts();
+  const auto conflicts = layout::illegal_crossings(
+      charts, arcs_a, layout::keep_edges_with_arcs(charts, arcs_a), Progress());
+  EXPECT_EQ(conflicts,
+            layout::illegal_crossings(charts, arcs_b, layout::keep_edges_with_arcs(charts, arcs_b),
+                                      Progress()));
   EXPECT_FALSE(conflicts.empty());
   for (const layout::EdgePair& pair : conflicts) {
     ASSERT_LT(pair.first, pair.second);
-    const GraphEdge &e = a.edges[pair.first], &f = a.edges[pair.second];
+    const GraphEdge &e = arcs_a.edges[pair.first], &f = arcs_a.edges[pair.second];
     EXPECT_FALSE(e.u == f.u || e.u == f.v || e.v == f.u || e.v == f.v);
   }
 }

@@ -1,17 +1,19 @@
-// The illegal crossings I (thesis Sec. 4.6, Algorithm 1, Remarks 4.1 and 4.2). At every
-// intersection m of gamma_a and gamma_b (possibly one self-crossing separatrix, Remark 4.1), the
-// parameter chart around m is a common local frame: every edge whose triangle has a side on a (on
-// b) is laid out in it by walking along a (along b) from m, its hypotenuse a segment there. Two
-// edges with the same alignment (bases parallel) whose hypotenuses cross are an illegal pair;
-// differently aligned crossings are legal. Illegality in one frame suffices. The zero-area pairs Z
-// of case 3 are added. Algorithm 1 names the set K of intersections that satisfy C1; every
-// intersection is used here, because two edges can cross where neither of the lines through the
-// crossing point gave an edge there (the frame still holds both triangles).
+// The illegal crossings I (thesis Sec. 4.6, Algorithm 1, Remarks 4.1 and 4.2): two edges whose
+// hypotenuses cross with the same alignment (bases parallel) cannot both be arcs of a layout;
+// differently aligned crossings are legal (they make a four-valent node); the zero-area pairs Z of
+// case 3 are added.
 //
-// Only pairs with one edge on a and the other on b are tested: two edges on the same line either
-// share a port (never matched together), are differently aligned, or lie on opposite sides of it.
-//
-// In:  the grown PortGraph. Out: I union Z, sorted, without pairs of edges sharing a node.
+// Algorithm 1 decides a crossing in a local frame at each intersection m of two separatrices, with
+// every edge whose triangle has a side on either line laid out by walking along that line from m.
+// That frame holds both triangles only where the region they span around m is flat; around
+// clustered singularities it lays over each other triangles that lie on different sheets of the
+// surface. On fertility 6,749 of the 83,263 pairs of the frames (bunny: 21,290 of 245,422) were
+// such, with arcs that never meet, while every pair found on the surface was in a frame too. So
+// the relation is read where it is exact, on the surface: the arcs of all edges
+// (keep_edges_with_arcs()) are intersected face by face, and two that meet are an illegal pair
+// when their bases, turned into that face's chart, are parallel (bases are isolines:
+// axis-parallel in every chart). This also holds self-crossing separatrices (Remark 4.1) and
+// crossings beyond where the separatrices through them stopped (L_max, spiral test, singularity).
 #pragma once
 
 #include <vector>
@@ -21,18 +23,10 @@
 
 namespace tessera::layout {
 
-std::vector<EdgePair> illegal_crossings(const PortGraph& graph, const Progress& progress);
-
-// The same relation read off the surface: the arcs of all edges (keep_edges_with_arcs()) are
-// intersected face by face, and two crossing arcs are an illegal pair when their bases, turned
-// into the crossing face's chart, are parallel (bases are isolines: axis-parallel in every chart).
-// This finds the crossings that no frame of Algorithm 1 holds, where the separatrices through the
-// crossing stopped before it (at L_max, by the spiral test or at a singularity).
-//
-// In:  the charts, the graph, one arc per edge. Out: the illegal pairs, sorted, without pairs of
-//      edges sharing a node.
-std::vector<EdgePair> illegal_arc_crossings(const Charts& charts, const PortGraph& graph,
-                                            const std::vector<Arc>& arcs, const Progress& progress);
+// In:  the charts, the graph, one arc per edge. Out: I union Z, sorted, without pairs of edges
+//      sharing a node.
+std::vector<EdgePair> illegal_crossings(const Charts& charts, const PortGraph& graph,
+                                        const std::vector<Arc>& arcs, const Progress& progress);
 
 // The pairs among the chosen arcs that close a loop with two convex corners: arcs joining the same
 // two singularities, and arcs leaving one singularity that cross (the loop runs from it to the

@@ -35,7 +35,6 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   json["matching_status"] = matching::to_string(layout.matching.status);
   json["lower_bound"] = finite_or_null(layout.matching.lower_bound);
   json["curved_edges"] = graph.curved_edges;
-  json["conflicts_on_surface_only"] = graph.conflicts_on_surface_only;
   json["twin_edges"] = graph.twin_edges;
   json["loop_conflicts"] = layout.loop_conflicts;
   json["length_limit"] = g.length_limit;

@@ -2,7 +2,7 @@
 // GLB's extras and the wasm module. Keys of issue 4: singularities (|S|), graph_edges (|E_G|),
 // conflicts (|I|), patches (|P|), angle_rsd (percent), valid (the project's checker), objective
 // (of P1), seconds (per stage); and alpha, ports, virtual_ports, nodes, arcs, solver,
-// matching_status, lower_bound, curved_edges, conflicts_on_surface_only, twin_edges, loop_conflicts,
+// matching_status, lower_bound, curved_edges, twin_edges, loop_conflicts,
 // length_limit, length_doublings, unmatchable_ports,
 // average_separatrix_length, problems.
 #pragma once

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <iterator>
 
 #include "layout/conflicts.h"
 #include "layout/growth.h"
@@ -65,12 +64,7 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
     ++result.length_doublings;
   }
   clock.stage_done("separatrices");
-  std::vector<EdgePair> in_frames = illegal_crossings(result.graph, progress);
-  std::vector<EdgePair> on_surface =
-      illegal_arc_crossings(charts, result.graph, result.arcs, progress);
-  std::set_union(in_frames.begin(), in_frames.end(), on_surface.begin(), on_surface.end(),
-                 std::back_inserter(result.graph.conflicts));
-  result.conflicts_on_surface_only = result.graph.conflicts.size() - in_frames.size();
+  result.graph.conflicts = illegal_crossings(charts, result.graph, result.arcs, progress);
   result.twin_edges = merge_twin_edges(result.graph, result.arcs);
   clock.stage_done("conflicts");
   return result;

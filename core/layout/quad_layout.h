@@ -44,9 +44,8 @@ struct LayoutGraph {
   PortGraph graph;
   std::vector<Arc> arcs;         // of every edge, in edge order
   std::size_t curved_edges = 0;  // candidates dropped: their hypotenuse is not straight
-  std::size_t conflicts_on_surface_only = 0;     // illegal pairs no frame of Algorithm 1 held
-  std::size_t twin_edges = 0;                    // removed as twins of kept edges (twin_edges.h)
-  int length_doublings = 0;                      // of L_max, until G had a perfect matching
+  std::size_t twin_edges = 0;    // removed as twins of kept edges (twin_edges.h)
+  int length_doublings = 0;      // of L_max, until G had a perfect matching
   std::vector<std::uint32_t> unmatchable_ports;  // no matching of G covers them (empty: fine)
   std::vector<StageSeconds> seconds;
 };
