@@ -2,7 +2,7 @@
 // ports is built once (field, parameterization, separatrices, conflicts), then solve_layout() runs
 // at each alpha on it with one ExactSolverCache, as the wasm session does. Prints, per alpha, the
 // whole re-solve and its stages (P1 over all loop rounds, arcs and refinement, check), the rounds,
-// the branch-and-bound nodes and the layout's figures.
+// the branch-and-bound nodes and the layout's figures (patches, validity, objective, angle RSD).
 #include <chrono>
 #include <cstdio>
 #include <sstream>
@@ -62,19 +62,19 @@ int main(int argc, char** argv) {
     std::printf("%s: |S| %zu, |E_G| %zu, |I| %zu; field to graph %.0f ms\n", argv[1],
                 param.singularities.size(), graph.graph.edges.size(), graph.graph.conflicts.size(),
                 ms_since(start));
-    std::printf("%6s %9s %8s %8s %8s %6s %6s %5s %6s %9s\n", "alpha", "total ms", "P1 ms",
-                "arcs ms", "check ms", "rounds", "nodes", "|P|", "valid", "objective");
+    std::printf("%6s %9s %8s %8s %8s %6s %6s %5s %6s %9s %6s\n", "alpha", "total ms", "P1 ms",
+                "arcs ms", "check ms", "rounds", "nodes", "|P|", "valid", "objective", "RSD %");
     matching::ExactSolverCache cache;
     for (double alpha : alphas) {
       start = Clock::now();
       const layout::QuadLayout layout = layout::solve_layout(
           charts, graph, alpha, matching::SolverKind::exact, options.limits, Progress(), &cache);
       const double total = ms_since(start);
-      std::printf("%6g %9.1f %8.1f %8.1f %8.1f %6d %6lld %5zu %6s %9.2f\n", alpha, total,
+      std::printf("%6g %9.1f %8.1f %8.1f %8.1f %6d %6lld %5zu %6s %9.2f %6.2f\n", alpha, total,
                   stage_ms(layout, "P1"), stage_ms(layout, "layout"), stage_ms(layout, "check"),
                   layout.rounds, static_cast<long long>(layout.matching.nodes),
                   layout.check.patch_count, layout.check.valid() ? "yes" : "no",
-                  layout.matching.objective);
+                  layout.matching.objective, layout.angle_rsd);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tessera_alpha_resolve: %s\n", e.what());
