@@ -22,6 +22,7 @@ using Clock = std::chrono::steady_clock;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kRootCutRounds = 30;
 constexpr int kRepairRounds = 6;
+constexpr double kIntegral = 1e-6;  // an LP value this close to 0 or 1 is integral
 
 MatchingResult infeasible(std::vector<std::uint32_t> unmatchable = {}) {
   MatchingResult r;
@@ -56,6 +57,19 @@ bool conflict_free(const Adjacency& conflicts, const std::vector<std::uint32_t>&
     for (std::uint32_t f : conflicts.of(e))
       if (chosen[f]) return false;
   return true;
+}
+
+// The edges at 1 when every value is 0 or 1 (within kIntegral), else nothing.
+std::optional<std::vector<std::uint32_t>> integral_edges(const std::vector<double>& x) {
+  std::vector<std::uint32_t> edges;
+  for (std::uint32_t e = 0; e < x.size(); ++e) {
+    if (x[e] > 1.0 - kIntegral) {
+      edges.push_back(e);
+    } else if (x[e] >= kIntegral) {
+      return std::nullopt;
+    }
+  }
+  return edges;
 }
 
 // Edges by decreasing LP value, then increasing reduced cost: the order the dive tries them in.
@@ -207,6 +221,8 @@ MatchingResult solve_component(ComponentStructure& part, Clock::time_point deadl
       lp.solve_with_cuts(root.exclusion, kInfinity, seconds_left(), kRootCutRounds);
   if (status == LpStatus::infeasible) return infeasible();
   if (status == LpStatus::time_limit) return stopped_at_root(cover_bound);
+  if (const std::optional<std::vector<std::uint32_t>> edges = integral_edges(lp.values()))
+    return optimal(problem, *edges);  // every conflict pair is in a row: a matching without any
   const double root_bound = std::max(cover_bound, lp.objective());
 
   const IncumbentSearch heuristics(problem, part.incident, part.conflicts, root.exclusion,
