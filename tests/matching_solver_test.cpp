@@ -122,6 +122,23 @@ TEST(MatchingExact, AgreesWithGlpkOnSyntheticLayoutInstances) {
   }
 }
 
+// Instances whose root relaxation leaves a gap, so that the search branches (pseudocosts) and
+// re-solves from the root's binding rows with the slack ones pooled: still GLPK's optimum.
+TEST(MatchingExact, AgreesWithGlpkWhenItBranches) {
+  int branched = 0;
+  for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+    SyntheticLayoutSpec spec = layout_spec(9, 7.0, 1.0);
+    spec.seed = seed;
+    const MatchingProblem p = synthetic_layout_instance(spec);
+    const MatchingResult glpk = solve_matching(p, SolverKind::glpk_tuned, 120.0);
+    ASSERT_EQ(glpk.status, SolveStatus::optimal) << "seed " << seed;
+    const MatchingResult exact = solve_matching(p, SolverKind::exact, 60.0);
+    expect_agree(p, exact, glpk.objective, "seed " + std::to_string(seed));
+    branched += exact.nodes > 0;
+  }
+  EXPECT_GE(branched, 2);
+}
+
 // Larger instances, where GLPK's plain model takes minutes: the tuned model is the reference.
 TEST(MatchingExact, AgreesWithTunedGlpkOnLargerSyntheticInstances) {
   for (double alpha : {0.0, 1.0, 5.0, 20.0}) {
