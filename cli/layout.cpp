@@ -54,7 +54,8 @@ void print_layout_help() {
       "                       average_separatrix_length, problems\n"
       "  --max-trace-steps N  faces crossed by all separatrices together (default 20000000)\n"
       "  --max-trace-seconds S  time for growing the separatrices (default 60)\n"
-      "  --max-solve-seconds S  time for program P1 (default 60; the best matching found is used)\n"
+      "  --max-solve-seconds S  time for program P1, its loop rounds included (default 60; the\n"
+      "                       best matching found is used)\n"
       "%s%s\n"
       "Exit codes: 0 ok (also for a layout the checker rejects: 'valid' says so), 1 internal\n"
       "error, 2 bad input (the message says what and where).\n",

@@ -74,11 +74,11 @@ namespace {
 
 // One solve of P1 and the layout it gives (Ch. 5, LAYOUT_NOTES "The layout itself").
 void lay_out(const Charts& charts, const LayoutGraph& graph,
-             const matching::MatchingProblem& problem, const Limits& limits,
+             const matching::MatchingProblem& problem, double solve_seconds,
              const Progress& progress, matching::ExactSolverCache* p1_cache, StageClock& clock,
              QuadLayout& layout) {
-  layout.matching = matching::solve_matching(problem, layout.solver, limits.max_solve_seconds,
-                                             progress, p1_cache);
+  layout.matching =
+      matching::solve_matching(problem, layout.solver, solve_seconds, progress, p1_cache);
   ++layout.rounds;
   clock.stage_done("P1");
   layout.arcs.clear();
@@ -93,7 +93,7 @@ void lay_out(const Charts& charts, const LayoutGraph& graph,
   clock.stage_done("check");
 }
 
-// Rounds of P1 after a failed check (loop_pairs()); each solve has the solver's time limit.
+// Rounds of P1 after a failed check (loop_pairs()); all rounds share the solver's time limit.
 constexpr int kMaxLoopRounds = 8;
 
 }  // namespace
@@ -112,15 +112,22 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
   matching::ExactSolverCache own_cache;
   if (!p1_cache) p1_cache = &own_cache;
   matching::MatchingProblem problem = matching_problem(graph.graph, alpha);
-  lay_out(charts, graph, problem, limits, progress, p1_cache, clock, layout);
-  for (int round = 0;
-       round < kMaxLoopRounds && !layout.check.valid() && layout.matching.has_solution(); ++round) {
+  const Clock::time_point deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                         std::chrono::duration<double>(std::min(limits.max_solve_seconds, 1e9)));
+  const auto seconds_left = [&] {
+    return std::chrono::duration<double>(deadline - Clock::now()).count();
+  };
+  lay_out(charts, graph, problem, seconds_left(), progress, p1_cache, clock, layout);
+  for (int round = 0; round < kMaxLoopRounds && !layout.check.valid() &&
+                      layout.matching.has_solution() && seconds_left() > 0;
+       ++round) {
     const std::vector<EdgePair> pairs = loop_pairs(charts, graph.graph, layout.arcs);
     if (pairs.empty()) break;
     for (const EdgePair& pair : pairs) problem.conflicts.push_back({pair.first, pair.second});
     QuadLayout next = layout;
     next.loop_conflicts += pairs.size();
-    lay_out(charts, graph, problem, limits, progress, p1_cache, clock, next);
+    lay_out(charts, graph, problem, seconds_left(), progress, p1_cache, clock, next);
     if (!next.matching.has_solution()) break;
     layout = std::move(next);
   }

@@ -8,7 +8,8 @@
 //     core/matching,
 //     the chosen edges traced as arcs, the mesh refined along them, patches, the validity check,
 //     the angle RSD; while the check finds patches that are no disks, P1 again with the chosen
-//     pairs that close loops around a handle as conflicts (conflicts.h, loop_pairs()).
+//     pairs that close loops around a handle as conflicts (conflicts.h, loop_pairs()); all
+//     solves of P1 together within limits.max_solve_seconds.
 //
 // In:  the charts of M_f (charts.h), options. Out: plain values; the refined mesh carries the face
 //      attribute "patch". Throws LimitError (tracing steps or time), CancelledError.
