@@ -51,7 +51,8 @@ void print_layout_help() {
       "                       solver, matching_status, lower_bound, curved_edges,\n"
       "                       twin_edges, loop_conflicts,\n"
       "                       length_limit, length_doublings, unmatchable_ports,\n"
-      "                       average_separatrix_length, problems\n"
+      "                       average_separatrix_length, problems (the first 12),\n"
+      "                       problem_count\n"
       "  --max-trace-steps N  faces crossed by all separatrices together (default 20000000)\n"
       "  --max-trace-seconds S  time for growing the separatrices (default 60)\n"
       "  --max-solve-seconds S  time for program P1, its loop rounds included (default 60; the\n"
@@ -91,6 +92,9 @@ std::string layout_text(const nlohmann::ordered_json& json) {
       json["angle_rsd"].get<double>(), json["valid"].get<bool>() ? "valid" : "INVALID");
   std::string result = text;
   for (const auto& problem : json["problems"]) result += "  " + problem.get<std::string>() + "\n";
+  if (json["problem_count"].get<std::size_t>() > json["problems"].size())
+    result +=
+        "  ... " + std::to_string(json["problem_count"].get<std::size_t>()) + " problems in all\n";
   for (const auto& [stage, seconds] : json["seconds"].items()) {
     std::snprintf(text, sizeof text, "  %-14s %.3f s\n", stage.c_str(), seconds.get<double>());
     result += text;

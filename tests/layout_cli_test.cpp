@@ -34,6 +34,7 @@ TEST(CliLayout, WritesJsonPlyAndGlb) {
     EXPECT_TRUE(json.contains(key)) << key;
   EXPECT_EQ(json["singularities"], 8);
   EXPECT_TRUE(json["valid"].get<bool>());
+  EXPECT_EQ(json["problem_count"], 0);
   EXPECT_GT(json["graph_edges"].get<int>(), json["ports"].get<int>());
   for (const char* stage : {"separatrices", "conflicts", "P1", "layout", "check"})
     EXPECT_TRUE(json["seconds"].contains(stage)) << stage;

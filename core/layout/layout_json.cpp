@@ -42,6 +42,7 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   json["unmatchable_ports"] = graph.unmatchable_ports;
   json["average_separatrix_length"] = average_separatrix_length(g);
   json["problems"] = layout.check.problems;
+  json["problem_count"] = layout.check.problem_count;
   return json;
 }
 

@@ -4,7 +4,7 @@
 // (of P1), seconds (per stage); and alpha, ports, virtual_ports, nodes, arcs, solver,
 // matching_status, lower_bound, curved_edges, twin_edges, loop_conflicts,
 // length_limit, length_doublings, unmatchable_ports,
-// average_separatrix_length, problems.
+// average_separatrix_length, problems (the first few), problem_count.
 #pragma once
 
 #include <nlohmann/json.hpp>
