@@ -5,7 +5,6 @@
 // the branch-and-bound nodes and the layout's figures (patches, validity, objective, angle RSD).
 #include <chrono>
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,20 +13,13 @@
 #include "layout/quad_layout.h"
 #include "mesh/connectivity.h"
 #include "mesh/load.h"
+#include "number_list.h"
 #include "param/seamless_param.h"
 
 namespace {
 
 using namespace tessera;
 using Clock = std::chrono::steady_clock;
-
-std::vector<double> numbers(const std::string& list) {
-  std::vector<double> out;
-  std::stringstream in(list);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(std::stod(item));
-  return out;
-}
 
 double ms_since(Clock::time_point start) {
   return 1000 * std::chrono::duration<double>(Clock::now() - start).count();
@@ -46,7 +38,7 @@ int main(int argc, char** argv) {
     std::printf("usage: tessera_alpha_resolve <mesh> [alphas,... (default 5,20,1,0,5)]\n");
     return argc < 2 ? 2 : 0;
   }
-  const std::vector<double> alphas = numbers(argc > 2 ? argv[2] : "5,20,1,0,5");
+  const std::vector<double> alphas = bench::number_list(argc > 2 ? argv[2] : "5,20,1,0,5");
   try {
     const Mesh mesh = triangulate(load_mesh_file(argv[1]).mesh);
     const Connectivity connectivity = build_connectivity(mesh);

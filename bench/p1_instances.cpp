@@ -5,25 +5,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "matching/generate.h"
 #include "matching/instance_json.h"
 #include "matching/instance_lp.h"
+#include "number_list.h"
 
 namespace {
 
 using tessera::matching::SyntheticLayoutSpec;
-
-std::vector<double> numbers(const std::string& list) {
-  std::vector<double> out;
-  std::stringstream in(list);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(std::stod(item));
-  return out;
-}
 
 void write(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
   std::ofstream(path, std::ios::binary)
@@ -43,8 +35,8 @@ int main(int argc, char** argv) {
     return argc < 2 ? 2 : 0;
   }
   const std::filesystem::path dir = argv[1];
-  const std::vector<double> pairs = numbers(argc > 2 ? argv[2] : "24,30,40,50");
-  const std::vector<double> alphas = numbers(argc > 3 ? argv[3] : "0,1,5,20");
+  const std::vector<double> pairs = tessera::bench::number_list(argc > 2 ? argv[2] : "24,30,40,50");
+  const std::vector<double> alphas = tessera::bench::number_list(argc > 3 ? argv[3] : "0,1,5,20");
   SyntheticLayoutSpec base;
   if (argc > 4) base.weight_noise = std::stod(argv[4]);
   if (argc > 5) base.mixed_crossing_rate = std::stod(argv[5]);
