@@ -1,6 +1,7 @@
 // Twin edges of G (core/layout/twin_edges.h): the two corners of one rectangle give one edge, whose
-// conflicts are the union of both copies'; genuine multi-edges between two ports (other lengths,
-// the other side) stay; on generated surfaces no twins are left and P1 keeps its layouts valid.
+// zero-area pairs are the union of both copies'; genuine multi-edges between two ports (other
+// lengths, the other side) stay; on generated surfaces no twins are left and P1 keeps its layouts
+// valid.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,7 +28,7 @@ GraphEdge crossing_edge(Index u, Index v, double base, double height, int side) 
   return e;
 }
 
-TEST(TwinEdges, MergesTheCopiesAndTheirConflicts) {
+TEST(TwinEdges, MergesTheCopiesAndTheirZeroAreaPairs) {
   layout::PortGraph graph;
   graph.edges = {
       crossing_edge(0, 1, 3.0, 1.0, 1),         // 0
@@ -39,8 +40,7 @@ TEST(TwinEdges, MergesTheCopiesAndTheirConflicts) {
   };
   std::vector<layout::Arc> arcs(graph.edges.size());
   for (Index e = 0; e < arcs.size(); ++e) arcs[e].length = double(e);
-  graph.conflicts = {{0, 1}, {1, 2}, {2, 5}, {3, 5}};
-  graph.zero_area = {{2, 5}};
+  graph.zero_area = {{0, 1}, {1, 2}, {2, 5}, {3, 5}};
 
   EXPECT_EQ(layout::merge_twin_edges(graph, arcs), 1u);
   ASSERT_EQ(graph.edges.size(), 5u);
@@ -49,8 +49,7 @@ TEST(TwinEdges, MergesTheCopiesAndTheirConflicts) {
   EXPECT_EQ(arcs[2].length, 3.0);  // edge 3 is now edge 2
   EXPECT_EQ(arcs[4].length, 5.0);
   // 0-1 and 2-1 are one pair now; 2-5 became 0-4.
-  EXPECT_EQ(graph.conflicts, (std::vector<EdgePair>{{0, 1}, {0, 4}, {2, 4}}));
-  EXPECT_EQ(graph.zero_area, (std::vector<EdgePair>{{0, 4}}));
+  EXPECT_EQ(graph.zero_area, (std::vector<EdgePair>{{0, 1}, {0, 4}, {2, 4}}));
 }
 
 TEST(TwinEdges, NoneAreLeftOnAGeneratedSurface) {

@@ -63,9 +63,9 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
     length_limit *= 2;
     ++result.length_doublings;
   }
+  result.twin_edges = merge_twin_edges(result.graph, result.arcs);
   clock.stage_done("separatrices");
   result.graph.conflicts = illegal_crossings(charts, result.graph, result.arcs, progress);
-  result.twin_edges = merge_twin_edges(result.graph, result.arcs);
   clock.stage_done("conflicts");
   return result;
 }

@@ -2,8 +2,8 @@
 // steps so that a change of alpha reruns only the second (SPEC "Data flow"):
 //  1. build_layout_graph(): ports, motorcycle growing to L_max = length_factor * diameter / h
 //     (Sec. 6.9, the diameter taken as the bounding-box diagonal), the edges whose hypotenuse is
-//     straight, and, if G has no perfect matching, growing on with L_max doubled (Sec. 5.1); then
-//     the conflicts I (Sec. 4.6), and one edge kept of each pair of twins (twin_edges.h);
+//     straight, and, if G has no perfect matching, growing on with L_max doubled (Sec. 5.1); one
+//     edge kept of each pair of twins (twin_edges.h); then the conflicts I (Sec. 4.6);
 //  2. solve_layout(): program P1 with w = L_base + alpha L_height (Ch. 5) by a solver of
 //     core/matching,
 //     the chosen edges traced as arcs, the mesh refined along them, patches, the validity check,

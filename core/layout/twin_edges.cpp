@@ -65,7 +65,6 @@ std::size_t merge_twin_edges(PortGraph& graph, std::vector<Arc>& arcs) {
   const std::size_t removed = graph.edges.size() - kept.size();
   graph.edges = std::move(kept);
   arcs = std::move(kept_arcs);
-  graph.conflicts = renumbered(graph.conflicts, number);
   graph.zero_area = renumbered(graph.zero_area, number);
   return removed;
 }

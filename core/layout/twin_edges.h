@@ -3,13 +3,13 @@
 // at the opposite corner m' (the line of s_i along -d_b meets the line of s_j along -d_a) it joins
 // the same two ports with the same base and height, and its hypotenuse is the same segment: the
 // arc leaves each port at the same turn atan(L_height / L_base) to the same side. Such twins are
-// one edge of the layout: P1 would otherwise hold two copies of every arc, each with its own share
-// of the conflicts (four pairs for one crossing of two twinned arcs), and a loop round that forbids
-// one copy would let the solver take the other.
+// one edge of the layout: P1 would otherwise hold two copies of every arc (four conflict pairs for
+// one crossing of two twinned arcs), and a loop round that forbids one copy would let the solver
+// take the other.
 //
-// In:  the graph with its conflicts, one arc per edge. Out: the first edge of each set of twins
-//      kept, the others removed and the edges renumbered; the conflicts and zero-area pairs of
-//      removed twins move to the kept one. Returns how many edges were removed.
+// In:  the graph before its conflicts, one arc per edge. Out: the first edge of each set of twins
+//      kept, the others removed and the edges renumbered; the zero-area pairs of removed twins move
+//      to the kept one. Returns how many edges were removed.
 #pragma once
 
 #include <vector>
