@@ -23,20 +23,16 @@ std::string vertex_list(const std::vector<Index>& vertices) {
 
 class Checker {
  public:
-  Checker(const Mesh& mesh, const std::vector<std::int32_t>& patch) : mesh_(mesh), patch_(patch) {}
+  Checker(const Mesh& mesh, const Connectivity& c, const std::vector<std::int32_t>& patch)
+      : mesh_(mesh), c_(c), patch_(patch) {}
 
   LayoutCheck run() {
     if (!check_cover()) return std::move(result_);
-    try {
-      c_ = build_connectivity(mesh_);
-    } catch (const Error& e) {
-      problem(std::string("the refined mesh is not a manifold: ") + e.what());
-      return std::move(result_);
-    }
     reached_.assign(mesh_.face_count(), -1);
     leaving_patch_.assign(mesh_.vertex_count(), -1);
     leaving_.assign(mesh_.vertex_count(), kNoIndex);
     walked_.assign(c_.halfedge_count(), -1);
+    counted_.assign(mesh_.vertex_count(), -1);
     find_nodes();
     std::vector<std::vector<Index>> faces(result_.patch_count);
     for (Index f = 0; f < mesh_.face_count(); ++f) faces[patch_[f]].push_back(f);
@@ -92,11 +88,13 @@ class Checker {
 
   void find_nodes() {
     is_node_.assign(mesh_.vertex_count(), false);
+    std::vector<Index> outgoing;
+    std::vector<std::int32_t> run_sides;  // the side of each run of faces around v
     for (Index v = 0; v < mesh_.vertex_count(); ++v) {
-      const std::vector<Index> outgoing = outgoing_halfedges(c_, v);
+      outgoing_halfedges(c_, v, outgoing);
       const std::size_t n = outgoing.size();
       if (n == 0) continue;
-      std::vector<std::int32_t> run_sides;  // the side of each run of faces around v
+      run_sides.clear();
       for (std::size_t k = 0; k < n; ++k) {
         const std::int32_t here = side_of(outgoing[k]);
         if (here != side_of(outgoing[(k + 1) % n])) run_sides.push_back(here);
@@ -141,18 +139,17 @@ class Checker {
 
   bool on_patch_boundary(Index h, std::int32_t p) const { return side_of(c_.twin[h]) != p; }
 
-  long euler_characteristic(const std::vector<Index>& faces, std::int32_t p) const {
-    std::vector<Index> vertices;
-    long edges = 0;
+  long euler_characteristic(const std::vector<Index>& faces, std::int32_t p) {
+    long vertices = 0, edges = 0;
     for (Index f : faces) {
       for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h) {
-        vertices.push_back(c_.from_vertex(h));
+        const Index v = c_.from_vertex(h);
+        vertices += counted_[v] != p;
+        counted_[v] = p;
         edges += on_patch_boundary(h, p) || h < c_.twin[h];
       }
     }
-    std::sort(vertices.begin(), vertices.end());
-    const long v = std::unique(vertices.begin(), vertices.end()) - vertices.begin();
-    return v - edges + long(faces.size());
+    return vertices - edges + long(faces.size());
   }
 
   // The boundary loops of patch p, each as its halfedges in order (counterclockwise around p).
@@ -219,21 +216,36 @@ class Checker {
   }
 
   const Mesh& mesh_;
+  const Connectivity& c_;
   const std::vector<std::int32_t>& patch_;
-  Connectivity c_;
   std::vector<bool> is_node_;
   // Scratch of the per-patch walks, marked with the patch id so that no patch clears them.
   std::vector<std::int32_t> reached_;        // per face (components())
   std::vector<std::int32_t> leaving_patch_;  // per vertex: p if leaving_ holds p's halfedge
   std::vector<Index> leaving_;               // per vertex (boundary_loops())
   std::vector<std::int32_t> walked_;         // per halfedge (boundary_loops())
+  std::vector<std::int32_t> counted_;        // per vertex (euler_characteristic())
   LayoutCheck result_;
 };
 
 }  // namespace
 
+LayoutCheck check_layout(const Mesh& mesh, const Connectivity& connectivity,
+                         const std::vector<std::int32_t>& patch) {
+  return Checker(mesh, connectivity, patch).run();
+}
+
 LayoutCheck check_layout(const Mesh& mesh, const std::vector<std::int32_t>& patch) {
-  return Checker(mesh, patch).run();
+  Connectivity connectivity;
+  try {
+    connectivity = build_connectivity(mesh);
+  } catch (const Error& e) {
+    LayoutCheck result;
+    result.problems.push_back(std::string("the refined mesh is not a manifold: ") + e.what());
+    result.problem_count = 1;
+    return result;
+  }
+  return check_layout(mesh, connectivity, patch);
 }
 
 }  // namespace tessera::layout

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/connectivity.h"
 #include "mesh/mesh.h"
 
 namespace tessera::layout {
@@ -43,5 +44,9 @@ struct LayoutCheck {
 };
 
 LayoutCheck check_layout(const Mesh& mesh, const std::vector<std::int32_t>& patch);
+// The same with the mesh's connectivity (build_connectivity()) given, e.g. the one the patches
+// were assigned on.
+LayoutCheck check_layout(const Mesh& mesh, const Connectivity& connectivity,
+                         const std::vector<std::int32_t>& patch);
 
 }  // namespace tessera::layout

@@ -27,9 +27,8 @@ class DisjointSets {
 
 }  // namespace
 
-std::vector<std::int32_t> assign_patches(const RefinedMesh& refined) {
+std::vector<std::int32_t> assign_patches(const RefinedMesh& refined, const Connectivity& c) {
   const Mesh& mesh = refined.mesh;
-  const Connectivity c = build_connectivity(mesh);
   DisjointSets sets(mesh.face_count());
   for (Index h = 0; h < c.corner_count; ++h) {
     const Index t = c.twin[h];

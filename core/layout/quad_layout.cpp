@@ -84,9 +84,10 @@ void lay_out(const Charts& charts, const LayoutGraph& graph,
   layout.arcs.clear();
   for (std::uint32_t e : layout.matching.edges) layout.arcs.push_back(graph.arcs[e]);
   layout.refined = refine_along_arcs(charts, layout.arcs);
-  std::vector<std::int32_t> patch = assign_patches(layout.refined);
+  const Connectivity connectivity = build_connectivity(layout.refined.mesh);
+  std::vector<std::int32_t> patch = assign_patches(layout.refined, connectivity);
   clock.stage_done("layout");
-  layout.check = check_layout(layout.refined.mesh, patch);
+  layout.check = check_layout(layout.refined.mesh, connectivity, patch);
   layout.angle_rsd =
       relative_standard_deviation(corner_angles(layout.refined, patch, layout.check));
   layout.refined.mesh.face_attributes["patch"] = std::move(patch);

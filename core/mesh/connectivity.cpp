@@ -139,14 +139,19 @@ Connectivity build_connectivity(const Mesh& mesh) {
 
 std::vector<Index> outgoing_halfedges(const Connectivity& connectivity, Index v) {
   std::vector<Index> out;
+  outgoing_halfedges(connectivity, v, out);
+  return out;
+}
+
+void outgoing_halfedges(const Connectivity& connectivity, Index v, std::vector<Index>& out) {
+  out.clear();
   const Index start = connectivity.vertex_halfedge[v];
-  if (start == kNoIndex) return out;
+  if (start == kNoIndex) return;
   Index h = start;
   do {
     out.push_back(h);
     h = connectivity.next_outgoing(h);
   } while (h != start);
-  return out;
 }
 
 }  // namespace tessera

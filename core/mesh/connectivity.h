@@ -54,5 +54,7 @@ Connectivity build_connectivity(const Mesh& mesh);
 
 // The halfedges leaving vertex v, counterclockwise, starting at vertex_halfedge[v].
 std::vector<Index> outgoing_halfedges(const Connectivity& connectivity, Index v);
+// The same into `out` (cleared first), for loops over every vertex that should not allocate.
+void outgoing_halfedges(const Connectivity& connectivity, Index v, std::vector<Index>& out);
 
 }  // namespace tessera
