@@ -82,11 +82,17 @@ PiecesByFace sort_pieces(const Mesh& mesh, const std::vector<Arc>& arcs, const E
 }
 
 // The arrangement of one face: nodes on its boundary cycle and at chord crossings, the edges
-// between them, its faces, their triangles.
+// between them, its faces, their triangles. One object serves every face in turn (reset()), so
+// that its lists keep their memory.
 class FaceArrangement {
  public:
-  FaceArrangement(const Charts& charts, const EdgePoints& points, Index face, RefinedMesh& out)
-      : charts_(charts), face_(face), out_(out) {
+  FaceArrangement(const Charts& charts, RefinedMesh& out) : charts_(charts), out_(out) {}
+
+  void reset(const EdgePoints& points, Index face) {
+    face_ = face;
+    cycle_.clear();
+    bary_.clear();
+    vertex_.clear();
     place_corners();
     build_cycle(points);
   }
@@ -120,15 +126,18 @@ class FaceArrangement {
     for (std::size_t k = 0; k < cycle_.size(); ++k)
       connect(cycle_[k], cycle_[(k + 1) % cycle_.size()]);
     sort_neighbours();
-    std::vector<std::vector<bool>> used(adjacent_.size());
-    for (std::size_t v = 0; v < adjacent_.size(); ++v) used[v].assign(adjacent_[v].size(), false);
+    const Index nodes = node_count();
+    slot_start_.assign(nodes + 1, 0);
+    for (Index v = 0; v < nodes; ++v) slot_start_[v + 1] = slot_start_[v] + adjacent_[v].size();
+    used_.assign(slot_start_[nodes], 0);
     // The outside lies left of the boundary cycle walked backwards; every other walk is a piece
     // of the triangle, however thin (a sign test on the area would drop slivers and leave holes).
-    walk_face(cycle_[1], slot_of(cycle_[1], cycle_[0]), used);
-    for (Index v = 0; v < adjacent_.size(); ++v) {
+    walk_face(cycle_[1], slot_of(cycle_[1], cycle_[0]));
+    for (Index v = 0; v < nodes; ++v) {
       for (std::size_t k = 0; k < adjacent_[v].size(); ++k) {
-        if (used[v][k]) continue;
-        emit_polygon(walk_face(v, k, used));
+        if (used_[slot_start_[v] + k]) continue;
+        walk_face(v, k);
+        emit_polygon(polygon_);
       }
     }
   }
@@ -173,9 +182,16 @@ class FaceArrangement {
     }
     bary_.push_back(b);
     vertex_.push_back(vertex);
-    adjacent_.emplace_back();
-    return static_cast<Index>(bary_.size() - 1);
+    const Index node = static_cast<Index>(bary_.size() - 1);
+    if (node < adjacent_.size()) {
+      adjacent_[node].clear();
+    } else {
+      adjacent_.emplace_back();
+    }
+    return node;
   }
+
+  Index node_count() const { return static_cast<Index>(bary_.size()); }
 
   Eigen::Vector2d planar(Index node) const {
     return bary_[node][0] * plane_[0] + bary_[node][1] * plane_[1] + bary_[node][2] * plane_[2];
@@ -215,12 +231,15 @@ class FaceArrangement {
   }
 
   void sort_neighbours() {
-    for (Index v = 0; v < adjacent_.size(); ++v) {
+    for (Index v = 0; v < node_count(); ++v) {
       const Eigen::Vector2d p = planar(v);
-      std::sort(adjacent_[v].begin(), adjacent_[v].end(), [&](Index a, Index b) {
-        const Eigen::Vector2d da = planar(a) - p, db = planar(b) - p;
-        return std::atan2(da.y(), da.x()) < std::atan2(db.y(), db.x());
-      });
+      by_angle_.clear();
+      for (Index a : adjacent_[v]) {
+        const Eigen::Vector2d d = planar(a) - p;
+        by_angle_.emplace_back(std::atan2(d.y(), d.x()), a);
+      }
+      std::sort(by_angle_.begin(), by_angle_.end());
+      for (std::size_t k = 0; k < by_angle_.size(); ++k) adjacent_[v][k] = by_angle_[k].second;
     }
   }
 
@@ -229,21 +248,20 @@ class FaceArrangement {
     return std::find(around.begin(), around.end(), to) - around.begin();
   }
 
-  // The face on the left of the directed edge v -> adjacent_[v][k]: at each node turn to the
-  // neighbour next clockwise from the one we came from.
-  std::vector<Index> walk_face(Index v, std::size_t k, std::vector<std::vector<bool>>& used) const {
-    std::vector<Index> polygon;
+  // The face on the left of the directed edge v -> adjacent_[v][k], into polygon_: at each node
+  // turn to the neighbour next clockwise from the one we came from.
+  void walk_face(Index v, std::size_t k) {
+    polygon_.clear();
     Index from = v;
     std::size_t slot = k;
-    while (!used[from][slot]) {
-      used[from][slot] = true;
-      polygon.push_back(from);
+    while (!used_[slot_start_[from] + slot]) {
+      used_[slot_start_[from] + slot] = 1;
+      polygon_.push_back(from);
       const Index to = adjacent_[from][slot];
       const std::size_t around = adjacent_[to].size();
       slot = (slot_of(to, from) + around - 1) % around;
       from = to;
     }
-    return polygon;
   }
 
   double triangle_area(Index a, Index b, Index c) const {
@@ -283,7 +301,7 @@ class FaceArrangement {
   }
 
   const Charts& charts_;
-  Index face_;
+  Index face_ = kNoIndex;
   RefinedMesh& out_;
   std::array<Eigen::Vector3d, 3> corner_position_;
   std::array<Eigen::Vector2d, 3> plane_;
@@ -291,7 +309,11 @@ class FaceArrangement {
   std::vector<Index> cycle_;
   std::vector<Barycentric> bary_;
   std::vector<Index> vertex_;
-  std::vector<std::vector<Index>> adjacent_;
+  std::vector<std::vector<Index>> adjacent_;  // the first node_count() lists are this face's
+  std::vector<std::pair<double, Index>> by_angle_;
+  std::vector<std::size_t> slot_start_;  // per node, its first entry in used_
+  std::vector<std::uint8_t> used_;       // per node and neighbour: walked
+  std::vector<Index> polygon_;
 };
 
 void copy_face(const Charts& charts, Index face, RefinedMesh& out) {
@@ -334,6 +356,7 @@ RefinedMesh refine_along_arcs(const Charts& charts, const std::vector<Arc>& arcs
     for (const auto& point : points.on(e))
       out.mesh.positions.push_back(position_of(mesh, c, {kNoIndex, e, point.first}));
   const PiecesByFace pieces = sort_pieces(mesh, arcs, points);
+  FaceArrangement arrangement(charts, out);
   for (Index f = 0; f < mesh.face_count(); ++f) {
     const Index first = charts.first_corner(f);
     bool touched = !pieces.chords[f].empty();
@@ -342,7 +365,7 @@ RefinedMesh refine_along_arcs(const Charts& charts, const std::vector<Arc>& arcs
       copy_face(charts, f, out);
       continue;
     }
-    FaceArrangement arrangement(charts, points, f, out);
+    arrangement.reset(points, f);
     arrangement.cut(pieces.chords[f]);
     arrangement.triangulate();
   }
