@@ -2,18 +2,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "layout/trace.h"
 
 namespace tessera::layout {
 namespace {
 
-// Where the arc starts and how far it goes.
+// Where the arc starts, how far it goes and how it arrives.
 struct ArcStart {
   LineCursor cursor;
   double length = 0;
   Index target = kNoIndex;  // the far singularity's vertex; kNoIndex: the arc ends at the boundary
+  Index target_point = kNoIndex;  // the far singular point (graph.ports.points)
+  double arrival_angle = 0;       // the unfolded angle at which the arc leaves the far end
 };
+
+// A straight line that reaches the far singularity more than this away from the angle of its
+// hypotenuse there (radians) has come in through another port's sector.
+constexpr double kArrivalTolerance = std::numbers::pi / 8;
 
 Index vertex_of_port(const PortGraph& graph, Index port) {
   return graph.ports.points[graph.ports.ports[port].singular_point].ring.vertex;
@@ -26,17 +33,21 @@ std::optional<ArcStart> arc_start(const Charts& charts, const PortGraph& graph,
                                   const GraphEdge& edge, bool from_far_end) {
   const Port& port = graph.ports.ports[from_far_end ? edge.v : edge.u];
   const SingularPoint& point = graph.ports.points[port.singular_point];
+  const double turn = edge.height == 0 ? 0.0 : std::atan2(-edge.side * edge.height, edge.base);
   ArcStart start;
   start.length = std::hypot(edge.base, edge.height);
-  if (edge.kind != EdgeKind::boundary)
+  if (edge.kind != EdgeKind::boundary) {
+    const Port& far = graph.ports.ports[from_far_end ? edge.u : edge.v];
     start.target = vertex_of_port(graph, from_far_end ? edge.u : edge.v);
+    start.target_point = far.singular_point;
+    start.arrival_angle = far.angle + turn;
+  }
   if (edge.height == 0) {
     start.cursor = cursor_at_corner(charts, port.corner, port.direction);
     return start;
   }
   // In the port's own corner if the turned direction stays there (a flipped chart turns the
   // other way), else in the corner of its unfolded angle.
-  const double turn = std::atan2(-edge.side * edge.height, edge.base);
   const bool flipped = charts.signed_area(charts.connectivity.face[port.corner]) < 0;
   const double chart_turn = flipped ? -turn : turn;
   const Eigen::Vector2d d =
@@ -85,7 +96,22 @@ bool passes_singularity(const Charts& charts, const PortGraph& graph, const Line
   return false;
 }
 
-// The straight line from the start to its target (or to the boundary), as pieces per face.
+// True if the line, arriving at the target in `corner` along `direction` (in the chart of that
+// corner's face), leaves the target backwards at the hypotenuse's angle there.
+bool arrives_along_hypotenuse(const Charts& charts, const PortGraph& graph, const ArcStart& start,
+                              Index corner, const Eigen::Vector2d& direction) {
+  const SingularPoint& point = graph.ports.points[start.target_point];
+  for (std::size_t k = 0; k < point.ring.corners.size(); ++k) {
+    if (point.ring.corners[k].corner != corner) continue;
+    double d = unfolded_angle(charts, point.ring, k, -direction) - start.arrival_angle;
+    if (point.cyclic()) d = std::remainder(d, point.ring.total);
+    return std::abs(d) < kArrivalTolerance;
+  }
+  return false;
+}
+
+// The straight line from the start to its target (or to the boundary), as pieces per face; none
+// if it reaches the target from another port's sector.
 std::optional<std::vector<ArcPiece>> trace_straight(const Charts& charts, const PortGraph& graph,
                                                     ArcStart start) {
   LineCursor& cursor = start.cursor;
@@ -103,6 +129,7 @@ std::optional<std::vector<ArcPiece>> trace_straight(const Charts& charts, const 
       const Index corner = corner_of(charts, cursor.face, start.target);
       const Eigen::Vector2d end = cursor.point + (start.length - cursor.length) * cursor.direction;
       if (corner != kNoIndex && (charts.uv(corner) - end).norm() <= slack) {
+        if (!arrives_along_hypotenuse(charts, graph, start, corner, cursor.direction)) break;
         add(cursor.face, from, {start.target, kNoIndex, 0}, cursor.point, charts.uv(corner));
         return pieces;
       }
@@ -111,7 +138,12 @@ std::optional<std::vector<ArcPiece>> trace_straight(const Charts& charts, const 
     if (!step.valid || passes_singularity(charts, graph, cursor, step, origin, start.target)) break;
     const SurfacePoint to = exit_point(charts, step);
     add(cursor.face, from, to, cursor.point, step.point);
-    if (start.target != kNoIndex && step.vertex == start.target) return pieces;
+    if (start.target != kNoIndex && step.vertex == start.target)
+      return arrives_along_hypotenuse(charts, graph, start,
+                                      corner_of(charts, cursor.face, start.target),
+                                      cursor.direction)
+                 ? std::optional(pieces)
+                 : std::nullopt;
     from = to;
     if (!cross_edge(charts, step, cursor)) {
       if (start.target == kNoIndex) return pieces;

@@ -7,9 +7,12 @@
 //
 // In:  the charts, the port graph and one of its edges. Out: the arc as pieces per face, each from
 //      one surface point (a vertex or a point on an edge) to the next, and as a polyline; nothing
-//      if the straight line misses its far singularity, that is, if the triangle is not
-//      singularity-free (Def. 2.7) after all: the window reduction of Prop. 4.1 assumes the region
-//      around the triangle flat, which a cluster of singularities inside it can defeat.
+//      if the straight line misses its far singularity, or reaches it through another port's
+//      sector (more than 22.5 degrees off the hypotenuse's angle there, where it would run along
+//      that port's arc), that is, if the triangle is not singularity-free (Def. 2.7) after all:
+//      the window reduction of Prop. 4.1 assumes the region around the triangle flat, which a
+//      cluster of singularities inside it can defeat. On dragon (--sharp 180) 3 of 28,478 edges
+//      came in through the wrong sector; none on the other shared meshes.
 #pragma once
 
 #include <optional>
