@@ -58,7 +58,7 @@ LpRelaxation::LpRelaxation(const MatchingProblem& problem, const Adjacency& inci
   }
   for (std::uint32_t v = 0; v < problem.node_count(); ++v)  // (5.2)
     add_row(lp, columns_of(incident.of(v)), problem.is_virtual[v] ? GLP_UP : GLP_FX, 1.0);
-  add_cliques(cliques);  // (5.3)
+  for (const Clique& clique : cliques) pool_.push_back({clique, 1.0, true});  // (5.3), lazily
   glp_std_basis(lp);
 }
 
