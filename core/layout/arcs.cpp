@@ -16,6 +16,7 @@ struct ArcStart {
   Index target = kNoIndex;  // the far singularity's vertex; kNoIndex: the arc ends at the boundary
   Index target_point = kNoIndex;  // the far singular point (graph.ports.points)
   double arrival_angle = 0;       // the unfolded angle at which the arc leaves the far end
+  Eigen::Vector2d base = Eigen::Vector2d::Zero();  // the base's direction, in the cursor's chart
 };
 
 // A straight line that reaches the far singularity more than this away from the angle of its
@@ -44,6 +45,7 @@ std::optional<ArcStart> arc_start(const Charts& charts, const PortGraph& graph,
   }
   if (edge.height == 0) {
     start.cursor = cursor_at_corner(charts, port.corner, port.direction);
+    start.base = port.direction;
     return start;
   }
   // In the port's own corner if the turned direction stays there (a flipped chart turns the
@@ -54,6 +56,7 @@ std::optional<ArcStart> arc_start(const Charts& charts, const PortGraph& graph,
       std::cos(chart_turn) * port.direction + std::sin(chart_turn) * perp(port.direction);
   if (corner_contains(charts, port.corner, d)) {
     start.cursor = cursor_at_corner(charts, port.corner, d);
+    start.base = port.direction;
     return start;
   }
   const double angle = port.angle + turn;
@@ -61,6 +64,7 @@ std::optional<ArcStart> arc_start(const Charts& charts, const PortGraph& graph,
   if (k == point.ring.corners.size()) return std::nullopt;
   start.cursor = cursor_at_corner(charts, point.ring.corners[k].corner,
                                   direction_in_corner(charts, point.ring, k, angle));
+  start.base = direction_in_corner(charts, point.ring, k, port.angle);
   return start;
 }
 
@@ -165,19 +169,25 @@ std::vector<ArcPiece> reversed(std::vector<ArcPiece> pieces) {
 }  // namespace
 
 // From the base port; where that fails (a folded singular ring at the start), from the far port.
+// The rotation from the start's direction to its base's. Reversing an arc traced from the far end
+// turns both by a half turn, so it holds for the reversed pieces too (and the far base is parallel
+// to the base).
+double base_turn(const ArcStart& start) {
+  const Eigen::Vector2d& d = start.cursor.direction;
+  return std::atan2(cross(d, start.base), d.dot(start.base));
+}
+
 std::optional<Arc> trace_arc(const Charts& charts, const PortGraph& graph, Index edge_index) {
   const GraphEdge& edge = graph.edges[edge_index];
-  std::optional<std::vector<ArcPiece>> pieces;
+  const double length = std::hypot(edge.base, edge.height);
   if (std::optional<ArcStart> start = arc_start(charts, graph, edge, false))
-    pieces = trace_straight(charts, graph, *start);
-  if (!pieces && edge.kind != EdgeKind::boundary) {
-    if (std::optional<ArcStart> start = arc_start(charts, graph, edge, true)) {
-      if (std::optional<std::vector<ArcPiece>> back = trace_straight(charts, graph, *start))
-        pieces = reversed(std::move(*back));
-    }
-  }
-  if (!pieces) return std::nullopt;
-  return Arc{edge_index, std::move(*pieces), std::hypot(edge.base, edge.height)};
+    if (std::optional<std::vector<ArcPiece>> pieces = trace_straight(charts, graph, *start))
+      return Arc{edge_index, std::move(*pieces), length, base_turn(*start)};
+  if (edge.kind == EdgeKind::boundary) return std::nullopt;
+  if (std::optional<ArcStart> start = arc_start(charts, graph, edge, true))
+    if (std::optional<std::vector<ArcPiece>> back = trace_straight(charts, graph, *start))
+      return Arc{edge_index, reversed(std::move(*back)), length, base_turn(*start)};
+  return std::nullopt;
 }
 
 std::vector<Arc> keep_edges_with_arcs(const Charts& charts, PortGraph& graph) {

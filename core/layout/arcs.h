@@ -45,6 +45,10 @@ struct Arc {
   Index edge = 0;                // of the port graph
   std::vector<ArcPiece> pieces;  // consecutive: each piece starts where the last one ended
   double length = 0;             // parametric
+  // The rotation (radians, counterclockwise in uv) from the arc's direction to its base's: the
+  // same in every chart, since the transitions are rotations. Measured where the arc starts, so
+  // that a flipped chart there (which turns the hypotenuse the other way) is accounted for.
+  double base_turn = 0;
 };
 
 std::optional<Arc> trace_arc(const Charts& charts, const PortGraph& graph, Index edge);

@@ -11,12 +11,11 @@ bool share_node(const GraphEdge& a, const GraphEdge& b) {
   return a.u == b.u || a.u == b.v || a.v == b.u || a.v == b.v;
 }
 
-// The arc's base direction in the chart of a piece: the piece's direction turned back by the
-// hypotenuse's angle with the base (arcs run from the base port's singularity).
-bool base_along_u(const GraphEdge& edge, const ArcPiece& piece) {
+// The arc's base direction in the chart of a piece: the piece's direction turned by the arc's
+// base_turn.
+bool base_along_u(const Arc& arc, const ArcPiece& piece) {
   const Eigen::Vector2d hyp = piece.to_uv - piece.from_uv;
-  const double turn = std::atan2(edge.side * edge.height, edge.base);
-  const Eigen::Vector2d base = std::cos(turn) * hyp + std::sin(turn) * perp(hyp);
+  const Eigen::Vector2d base = std::cos(arc.base_turn) * hyp + std::sin(arc.base_turn) * perp(hyp);
   return std::abs(base.x()) > std::abs(base.y());
 }
 
@@ -59,7 +58,7 @@ void sort_unique(std::vector<EdgePair>& pairs) {
 }
 
 // The pairs of arcs whose pieces meet in a face (touching included, but not at a singularity both
-// leave) and for which keep(edge, piece, other edge, other piece) holds; edges sharing a node left
+// leave) and for which keep(arc, piece, other arc, other piece) holds; edges sharing a node left
 // out.
 template <class Keep>
 std::vector<EdgePair> meeting_arcs(const Charts& charts, const PortGraph& graph,
@@ -81,7 +80,7 @@ std::vector<EdgePair> meeting_arcs(const Charts& charts, const PortGraph& graph,
         const GraphEdge &e = graph.edges[p.edge], &g = graph.edges[q.edge];
         if (share_node(e, g)) continue;
         const ArcPiece &a = p.pieces[here[i].second], &b = q.pieces[here[j].second];
-        if (!keep(e, a, g, b) || !pieces_meet(a, b, tolerance)) continue;
+        if (!keep(p, a, q, b) || !pieces_meet(a, b, tolerance)) continue;
         if (at_singular_vertex(graph, a.from, b.from) || at_singular_vertex(graph, a.from, b.to) ||
             at_singular_vertex(graph, a.to, b.from) || at_singular_vertex(graph, a.to, b.to))
           continue;
@@ -113,9 +112,8 @@ std::vector<EdgePair> joining_same_singularities(const PortGraph& graph,
 
 std::vector<EdgePair> illegal_crossings(const Charts& charts, const PortGraph& graph,
                                         const std::vector<Arc>& arcs, const Progress& progress) {
-  const auto same_alignment = [](const GraphEdge& e, const ArcPiece& a, const GraphEdge& g,
-                                 const ArcPiece& b) {
-    return base_along_u(e, a) == base_along_u(g, b);
+  const auto same_alignment = [](const Arc& p, const ArcPiece& a, const Arc& q, const ArcPiece& b) {
+    return base_along_u(p, a) == base_along_u(q, b);
   };
   std::vector<EdgePair> pairs = meeting_arcs(charts, graph, arcs, same_alignment, progress);
   pairs.insert(pairs.end(), graph.zero_area.begin(), graph.zero_area.end());
@@ -125,9 +123,9 @@ std::vector<EdgePair> illegal_crossings(const Charts& charts, const PortGraph& g
 
 std::vector<EdgePair> loop_pairs(const Charts& charts, const PortGraph& graph,
                                  const std::vector<Arc>& chosen) {
-  const auto from_one_singularity = [&graph](const GraphEdge& e, const ArcPiece&,
-                                             const GraphEdge& g, const ArcPiece&) {
-    return share_singularity(graph, e, g);
+  const auto from_one_singularity = [&graph](const Arc& p, const ArcPiece&, const Arc& q,
+                                             const ArcPiece&) {
+    return share_singularity(graph, graph.edges[p.edge], graph.edges[q.edge]);
   };
   std::vector<EdgePair> pairs =
       meeting_arcs(charts, graph, chosen, from_one_singularity, Progress());
