@@ -23,10 +23,6 @@ struct ArcStart {
 // hypotenuse there (radians) has come in through another port's sector.
 constexpr double kArrivalTolerance = std::numbers::pi / 8;
 
-Index vertex_of_port(const PortGraph& graph, Index port) {
-  return graph.ports.points[graph.ports.ports[port].singular_point].ring.vertex;
-}
-
 // The arc leaves the base port's singularity, or the far port's when `from_far_end`: the
 // hypotenuse makes the same turn atan(height / base) with either port (LAYOUT_NOTES: s_i - s_j
 // = L_base d_far - side L_height J d_far with d_far the far port's direction).
@@ -39,8 +35,8 @@ std::optional<ArcStart> arc_start(const Charts& charts, const PortGraph& graph,
   start.length = std::hypot(edge.base, edge.height);
   if (edge.kind != EdgeKind::boundary) {
     const Port& far = graph.ports.ports[from_far_end ? edge.u : edge.v];
-    start.target = vertex_of_port(graph, from_far_end ? edge.u : edge.v);
     start.target_point = far.singular_point;
+    start.target = graph.ports.points[far.singular_point].ring.vertex;
     start.arrival_angle = far.angle + turn;
   }
   if (edge.height == 0) {
@@ -166,9 +162,6 @@ std::vector<ArcPiece> reversed(std::vector<ArcPiece> pieces) {
   return pieces;
 }
 
-}  // namespace
-
-// From the base port; where that fails (a folded singular ring at the start), from the far port.
 // The rotation from the start's direction to its base's. Reversing an arc traced from the far end
 // turns both by a half turn, so it holds for the reversed pieces too (and the far base is parallel
 // to the base).
@@ -177,6 +170,9 @@ double base_turn(const ArcStart& start) {
   return std::atan2(cross(d, start.base), d.dot(start.base));
 }
 
+}  // namespace
+
+// From the base port; where that fails (a folded singular ring at the start), from the far port.
 std::optional<Arc> trace_arc(const Charts& charts, const PortGraph& graph, Index edge_index) {
   const GraphEdge& edge = graph.edges[edge_index];
   const double length = std::hypot(edge.base, edge.height);

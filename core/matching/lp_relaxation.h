@@ -48,9 +48,6 @@ class LpRelaxation {
   // of the cliques at this optimum, priced into the edge.
   std::vector<double> edge_prices() const;
 
-  // Adds rows sum_{e in C} x_e <= 1 (cliques of the exclusion graph, e.g. separated ones).
-  void add_cliques(const std::vector<Clique>& cliques);
-
   // solve(), then up to `rounds` times: add the violated clique rows of `exclusion` (cliques.h)
   // and odd-set rows, and solve again; stops early when none is violated. Rows of the pool
   // (drop_slack_rows()) that the solution violates come back first, however many rounds that
@@ -59,19 +56,22 @@ class LpRelaxation {
   LpStatus solve_with_cuts(const Adjacency& exclusion, double cutoff, double seconds, int rounds);
 
   // Moves the clique and odd-set rows that are slack at the current optimum into the pool: the
-  // LP the search re-solves at every node shrinks to the rows that bind (on fertility's P1 about
-  // 700 of 3,300), each node's dual simplex gets that much cheaper, and a pooled row is added back
-  // when a node's solution violates it. Call between solves, before any basis() is kept.
+  // LP the search re-solves at every node shrinks to the rows that bind, each node's dual simplex
+  // gets that much cheaper, and a pooled row is added back when a node's solution violates it.
+  // Call between solves, before any basis() is kept.
   void drop_slack_rows();
-
-  // Odd sets S of ports (no virtual port) spanned by a component of the fractional edges whose
-  // row x(E(S)) <= (|S| - 1) / 2 the current solution violates; adds their rows. Returns how many.
-  std::size_t add_violated_odd_sets();
 
   LpBasis basis() const;
   void restore(const LpBasis& basis);
 
  private:
+  // Adds rows sum_{e in C} x_e <= 1 (cliques of the exclusion graph, e.g. separated ones).
+  void add_cliques(const std::vector<Clique>& cliques);
+
+  // Odd sets S of ports (no virtual port) spanned by a component of the fractional edges whose
+  // row x(E(S)) <= (|S| - 1) / 2 the current solution violates; adds their rows. Returns how many.
+  std::size_t add_violated_odd_sets();
+
   // Solves once, without the pool; stops early with `cutoff` once the bound provably exceeds it.
   LpStatus solve(double cutoff, double seconds);
   void read_solution();
