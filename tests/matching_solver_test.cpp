@@ -3,9 +3,11 @@
 // optimum, and every matching passes the independent checker.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 
+#include "matching/adjacency.h"
 #include "matching/blossom.h"
 #include "matching/check.h"
 #include "matching/components.h"
@@ -288,6 +290,75 @@ TEST(MatchingExact, ATimeLimitReturnsTheBestWithAProvenBound) {
     EXPECT_LE(r.lower_bound, r.objective);
     EXPECT_GT(r.gap(), 0.0);
   }
+}
+
+// The optimum among the matchings that hold edge `kept` (brute force, m <= 20).
+double brute_force_optimum_with(const MatchingProblem& p, std::uint32_t kept) {
+  double best = kInfinity;
+  const std::uint32_t m = static_cast<std::uint32_t>(p.edges.size());
+  for (std::uint32_t subset = 0; subset < (1u << m); ++subset) {
+    if (!(subset & (1u << kept))) continue;
+    std::vector<std::uint32_t> edges;
+    for (std::uint32_t e = 0; e < m; ++e)
+      if (subset & (1u << e)) edges.push_back(e);
+    const SolutionCheck check = check_solution(p, edges);
+    if (check.feasible) best = std::min(best, check.objective);
+  }
+  return best;
+}
+
+SearchLimits generous_limits() {
+  return {std::chrono::steady_clock::now() + std::chrono::seconds(10)};
+}
+
+// RENS keeps the edges at 1 and completes them optimally: with one edge at 1 (the rest at 1/2) it
+// finds the best matching that holds that edge, or reports none when no matching holds it.
+TEST(MatchingNeighbourhood, CompletesTheEdgesAtOneOptimally) {
+  int completed = 0, impossible = 0;
+  for (std::uint64_t seed = 1; seed <= 150; ++seed) {
+    const MatchingProblem p = tiny_instance(seed);
+    const Adjacency conflicts = conflicting_edges(p);
+    const std::vector<Fixed> fixed(p.edges.size(), Fixed::free);
+    for (std::uint32_t kept = 0; kept < p.edges.size(); kept += 3) {
+      std::vector<double> x(p.edges.size(), 0.5);
+      x[kept] = 1.0;
+      const Incumbent found = complete_integral_part(p, conflicts, x, fixed, generous_limits());
+      const double optimum = brute_force_optimum_with(p, kept);
+      const std::string what = "seed " + std::to_string(seed) + " edge " + std::to_string(kept);
+      if (std::isinf(optimum)) {
+        EXPECT_FALSE(found.found) << what;
+        ++impossible;
+        continue;
+      }
+      ASSERT_TRUE(found.found) << what;
+      EXPECT_TRUE(std::binary_search(found.edges.begin(), found.edges.end(), kept)) << what;
+      const SolutionCheck check = check_solution(p, found.edges);
+      EXPECT_TRUE(check.feasible) << what;
+      EXPECT_NEAR(found.objective, optimum, 1e-9 * std::max(1.0, std::abs(optimum))) << what;
+      ++completed;
+    }
+  }
+  EXPECT_GT(completed, 50);
+  EXPECT_GT(impossible, 20);
+}
+
+// With an optimum's edges all at 1 there is nothing left to match: the completion is that optimum;
+// with no edge at 1 there is no neighbourhood.
+TEST(MatchingNeighbourhood, AnIntegralPointIsItsOwnCompletion) {
+  const MatchingProblem p = synthetic_layout_instance(layout_spec(9, 7.0, 1.0));
+  const MatchingResult optimum = solve_matching(p, SolverKind::exact, 60.0);
+  ASSERT_EQ(optimum.status, SolveStatus::optimal);
+  std::vector<double> x(p.edges.size(), 0.0);
+  for (std::uint32_t e : optimum.edges) x[e] = 1.0;
+  const Adjacency conflicts = conflicting_edges(p);
+  const std::vector<Fixed> fixed(p.edges.size(), Fixed::free);
+  const Incumbent found = complete_integral_part(p, conflicts, x, fixed, generous_limits());
+  ASSERT_TRUE(found.found);
+  EXPECT_EQ(found.edges, optimum.edges);
+  EXPECT_EQ(found.objective, optimum.objective);
+  EXPECT_FALSE(complete_integral_part(p, conflicts, std::vector<double>(p.edges.size(), 0.5), fixed,
+                                      generous_limits())
+                   .found);
 }
 
 TEST(MatchingBlossom, CoversPortsAtLeastWeightWithVirtualPorts) {

@@ -84,14 +84,14 @@ class Search {
  public:
   Search(const MatchingProblem& problem, LpRelaxation& lp, const Adjacency& exclusion,
          const std::vector<Fixed>& root, const IncumbentSearch& heuristics, Incumbent start,
-         double root_bound, Clock::time_point deadline, const Progress& progress)
+         double root_bound, const SearchLimits& limits, const Progress& progress)
       : problem_(problem),
         lp_(lp),
         exclusion_(exclusion),
         heuristics_(heuristics),
         best_(std::move(start)),
         root_bound_(root_bound),
-        deadline_(deadline),
+        limits_(limits),
         progress_(progress),
         root_(root.size()),
         pseudocosts_(root.size()) {
@@ -108,7 +108,7 @@ class Search {
       Node node = open_.top();
       open_.pop();
       if (node.bound >= cutoff()) continue;
-      if (Clock::now() >= deadline_) {
+      if (Clock::now() >= limits_.deadline || nodes_ >= limits_.max_nodes) {
         stopped_bound = node.bound;
         break;
       }
@@ -211,7 +211,7 @@ class Search {
     for (;;) {
       ++nodes_;
       report();
-      const double seconds = std::chrono::duration<double>(deadline_ - Clock::now()).count();
+      const double seconds = std::chrono::duration<double>(limits_.deadline - Clock::now()).count();
       const LpStatus status = lp_.solve_with_cuts(exclusion_, cutoff(), seconds, kNodeCutRounds);
       if (status == LpStatus::time_limit) {
         stopped_bound = node.bound;
@@ -249,7 +249,7 @@ class Search {
   const IncumbentSearch& heuristics_;
   Incumbent best_;
   double root_bound_;
-  Clock::time_point deadline_;
+  SearchLimits limits_;
   const Progress& progress_;
   std::vector<std::int8_t> root_;     // per edge: -1 free, else the value preprocessing fixed
   std::vector<std::int8_t> current_;  // per edge: -1 free, else the value it is fixed to now
@@ -268,9 +268,8 @@ double bound_tolerance(double incumbent) {
 SearchResult branch_and_bound(const MatchingProblem& problem, LpRelaxation& lp,
                               const Adjacency& exclusion, const std::vector<Fixed>& root,
                               const IncumbentSearch& heuristics, Incumbent start, double root_bound,
-                              std::chrono::steady_clock::time_point deadline,
-                              const Progress& progress) {
-  return Search(problem, lp, exclusion, root, heuristics, std::move(start), root_bound, deadline,
+                              const SearchLimits& limits, const Progress& progress) {
+  return Search(problem, lp, exclusion, root, heuristics, std::move(start), root_bound, limits,
                 progress)
       .run();
 }

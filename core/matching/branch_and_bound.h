@@ -6,9 +6,10 @@
 // A fractional edge e is branched on, the one whose pseudocosts (the mean bound gains per unit of
 // change seen so far when branching on it, down and up) have the largest product: x_e = 1 first
 // (it settles the edge's two ports and every conflict pair it is in), explored depth-first until
-// that dive ends, then x_e = 0; the next dive starts at the open node of least bound. New incumbents are improved by local search.
-// The search ends when no open node can beat the incumbent (optimal; the gap is closed) or at the
-// deadline, with the least open bound as the proven lower bound.
+// that dive ends, then x_e = 0; the next dive starts at the open node of least bound. New
+// incumbents are improved by local search. The search ends when no open node can beat the incumbent
+// (optimal; the gap is closed) or at the deadline or node limit, with the least open bound as the
+// proven lower bound.
 #pragma once
 
 #include <chrono>
@@ -33,11 +34,17 @@ struct SearchResult {
 // the exclusion graph whose violated cliques are separated at every node; `start` is the best
 // matching known so far (or none); `root_bound` a proven lower bound of P1 (e.g. the cheapest
 // matching without conflicts, which may exceed the relaxation's), the least bound of every node.
+struct SearchLimits {
+  std::chrono::steady_clock::time_point deadline;
+  // A node limit bounds the search by its work, not by the machine's speed: the same result on
+  // every run and machine (used for the search inside a heuristic, exact_solver.cpp).
+  std::uint64_t max_nodes = UINT64_MAX;
+};
+
 SearchResult branch_and_bound(const MatchingProblem& problem, LpRelaxation& lp,
                               const Adjacency& exclusion, const std::vector<Fixed>& root,
                               const IncumbentSearch& heuristics, Incumbent start, double root_bound,
-                              std::chrono::steady_clock::time_point deadline,
-                              const Progress& progress);
+                              const SearchLimits& limits, const Progress& progress);
 
 // Pruning tolerance: a node whose bound is within this of the incumbent cannot improve it.
 double bound_tolerance(double incumbent);

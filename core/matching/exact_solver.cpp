@@ -22,7 +22,8 @@ using Clock = std::chrono::steady_clock;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kRootCutRounds = 30;
 constexpr int kRepairRounds = 6;
-constexpr double kIntegral = 1e-6;  // an LP value this close to 0 or 1 is integral
+constexpr std::uint64_t kNeighbourhoodNodes = 200;  // complete_integral_part()'s search at roots
+constexpr double kIntegral = 1e-6;                  // an LP value this close to 0 or 1 is integral
 
 MatchingResult infeasible(std::vector<std::uint32_t> unmatchable = {}) {
   MatchingResult r;
@@ -183,8 +184,19 @@ void add_pairs(ComponentStructure& part, const std::vector<ConflictPair>& extra)
     root.cliques.push_back({std::min(c.first, c.second), std::max(c.first, c.second)});
 }
 
-MatchingResult solve_component(ComponentStructure& part, Clock::time_point deadline,
+// How a solve searches: its limits, and whether its roots look for an incumbent around the LP
+// optimum (complete_integral_part(), whose own solve does not).
+struct SolveMode {
+  SearchLimits limits;
+  bool search_neighbourhood = true;
+};
+
+MatchingResult solve_all(const MatchingProblem& problem, std::vector<ComponentStructure>& parts,
+                         Clock::time_point start, const SolveMode& mode, const Progress& progress);
+
+MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
                                const Progress& progress) {
+  const Clock::time_point deadline = mode.limits.deadline;
   const MatchingProblem& problem = part.component.problem;
   if (!part.unmatchable_ports.empty()) return infeasible(part.unmatchable_ports);
   // The cheapest matching without conflict constraints (Sec. 5.1): optimal when conflict-free,
@@ -231,10 +243,17 @@ MatchingResult solve_component(ComponentStructure& part, Clock::time_point deadl
   Incumbent repaired = heuristics.lagrangian_repair(lp.edge_prices(), kRepairRounds);
   if (repaired.found && (!start.found || repaired.objective < start.objective))
     start = std::move(repaired);
+  if (mode.search_neighbourhood) {
+    Incumbent completed = complete_integral_part(
+        problem, part.conflicts, lp.values(), root.probing.edges, {deadline, kNeighbourhoodNodes});
+    if (completed.found) heuristics.improve(completed);
+    if (completed.found && (!start.found || completed.objective < start.objective))
+      start = std::move(completed);
+  }
   lp.drop_slack_rows();
   const SearchResult search =
       branch_and_bound(problem, lp, root.exclusion, root.probing.edges, heuristics,
-                       std::move(start), root_bound, deadline, progress);
+                       std::move(start), root_bound, mode.limits, progress);
   return from_search(search, root_bound);
 }
 
@@ -250,7 +269,84 @@ void add_component(const Component& component, const MatchingResult& part, Match
   }
 }
 
+MatchingResult solve_all(const MatchingProblem& problem, std::vector<ComponentStructure>& parts,
+                         Clock::time_point start, const SolveMode& mode, const Progress& progress) {
+  MatchingResult total;
+  total.status = SolveStatus::optimal;
+  for (ComponentStructure& structure : parts) {
+    const Component& component = structure.component;
+    set_weights(structure.component, problem);
+    const MatchingResult part = solve_component(structure, mode, progress);
+    if (part.status == SolveStatus::infeasible) {
+      MatchingResult r = infeasible();
+      for (std::uint32_t v : part.unmatchable_ports)
+        r.unmatchable_ports.push_back(component.node_of[v]);
+      r.nodes = total.nodes + part.nodes;
+      r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      return r;
+    }
+    add_component(component, part, total);
+  }
+  if (total.status == SolveStatus::time_limit) {
+    total.edges.clear();
+    total.objective = kInfinity;
+  }
+  std::sort(total.edges.begin(), total.edges.end());
+  if (total.has_solution()) total.objective = objective_of(problem, total.edges);
+  if (total.status == SolveStatus::optimal) total.lower_bound = total.objective;
+  total.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return total;
+}
+
 }  // namespace
+
+Incumbent complete_integral_part(const MatchingProblem& problem, const Adjacency& conflicts,
+                                 const std::vector<double>& x, const std::vector<Fixed>& fixed,
+                                 const SearchLimits& limits) {
+  const std::size_t m = problem.edges.size();
+  std::vector<std::uint32_t> kept;
+  std::vector<std::int64_t> local(problem.node_count(), 0);
+  for (std::uint32_t e = 0; e < m; ++e) {
+    if (x[e] <= 1.0 - kIntegral) continue;
+    kept.push_back(e);
+    local[problem.edges[e].u] = local[problem.edges[e].v] = -1;
+  }
+  MatchingProblem open;
+  for (std::size_t v = 0; v < local.size(); ++v) {
+    if (local[v] < 0) continue;
+    local[v] = static_cast<std::int64_t>(open.node_count());
+    open.is_virtual.push_back(problem.is_virtual[v]);
+  }
+  if (kept.empty()) return {};
+  std::vector<std::uint8_t> blocked(m, 0);
+  for (std::uint32_t e : kept)
+    for (std::uint32_t f : conflicts.of(e)) blocked[f] = 1;
+  std::vector<std::int64_t> open_edge(m, -1);
+  std::vector<std::uint32_t> edge_of;
+  for (std::uint32_t e = 0; e < m; ++e) {
+    const MatchingEdge& edge = problem.edges[e];
+    if (blocked[e] || fixed[e] == Fixed::zero || local[edge.u] < 0 || local[edge.v] < 0) continue;
+    open_edge[e] = static_cast<std::int64_t>(open.edges.size());
+    open.edges.push_back({static_cast<std::uint32_t>(local[edge.u]),
+                          static_cast<std::uint32_t>(local[edge.v]), edge.weight});
+    edge_of.push_back(e);
+  }
+  for (const ConflictPair& c : problem.conflicts)
+    if (open_edge[c.first] >= 0 && open_edge[c.second] >= 0)
+      open.conflicts.push_back({static_cast<std::uint32_t>(open_edge[c.first]),
+                                static_cast<std::uint32_t>(open_edge[c.second])});
+  std::vector<ComponentStructure> parts = prepare(open);
+  const SolveMode mode{limits, false};
+  const MatchingResult rest = solve_all(open, parts, Clock::now(), mode, Progress());
+  if (!rest.has_solution()) return {};
+  Incumbent found;
+  found.found = true;
+  found.edges = std::move(kept);
+  for (std::uint32_t e : rest.edges) found.edges.push_back(edge_of[e]);
+  std::sort(found.edges.begin(), found.edges.end());
+  found.objective = objective_of(problem, found.edges);
+  return found;
+}
 
 std::vector<ComponentStructure>* ExactSolverCache::structure_for(const MatchingProblem& problem) {
   if (!filled_) {
@@ -292,31 +388,7 @@ MatchingResult solve_exact(const MatchingProblem& problem, double time_limit,
   std::vector<ComponentStructure>* cached = cache ? cache->structure_for(problem) : nullptr;
   std::vector<ComponentStructure> fresh;
   if (!cached) fresh = prepare(problem);
-  MatchingResult total;
-  total.status = SolveStatus::optimal;
-  for (ComponentStructure& structure : cached ? *cached : fresh) {
-    const Component& component = structure.component;
-    set_weights(structure.component, problem);
-    const MatchingResult part = solve_component(structure, deadline, progress);
-    if (part.status == SolveStatus::infeasible) {
-      MatchingResult r = infeasible();
-      for (std::uint32_t v : part.unmatchable_ports)
-        r.unmatchable_ports.push_back(component.node_of[v]);
-      r.nodes = total.nodes + part.nodes;
-      r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      return r;
-    }
-    add_component(component, part, total);
-  }
-  if (total.status == SolveStatus::time_limit) {
-    total.edges.clear();
-    total.objective = kInfinity;
-  }
-  std::sort(total.edges.begin(), total.edges.end());
-  if (total.has_solution()) total.objective = objective_of(problem, total.edges);
-  if (total.status == SolveStatus::optimal) total.lower_bound = total.objective;
-  total.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  return total;
+  return solve_all(problem, cached ? *cached : fresh, start, SolveMode{{deadline}}, progress);
 }
 
 }  // namespace tessera::matching

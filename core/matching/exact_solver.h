@@ -8,7 +8,9 @@
 //  4. Probing fixes edges that no feasible matching can hold, or that every one must (probing.h).
 //  5. The LP relaxation with clique rows and odd-set rows (lp_relaxation.h) gives the root bound
 //     and the clique multipliers that price conflicts for the Lagrangian repair (incumbent.h).
-//  6. LP-based branch-and-bound with reduced-cost fixing closes the gap (branch_and_bound.h).
+//  6. The incumbent to start from: the best of a dive and a Lagrangian repair (incumbent.h) and the
+//     optimum of the smaller P1 left once the LP's edges at 1 are kept (RENS, exact_solver.cpp).
+//  7. LP-based branch-and-bound with reduced-cost fixing closes the gap (branch_and_bound.h).
 // Deterministic: the same instance gives the same matching, whatever the machine, unless the time
 // limit stops it.
 //
@@ -23,6 +25,7 @@
 
 #include "base/progress.h"
 #include "matching/adjacency.h"
+#include "matching/branch_and_bound.h"
 #include "matching/cliques.h"
 #include "matching/components.h"
 #include "matching/probing.h"
@@ -62,6 +65,19 @@ class ExactSolverCache {
   std::vector<ComponentStructure> with_extra_pairs_;  // for the last problem with extra pairs
   bool filled_ = false;
 };
+
+// A matching that keeps the edges at 1 in `x` (an LP optimum), a relaxation-induced neighbourhood
+// (RENS, Berthold 2014): the ports they leave open are matched by the exact solver, within
+// `limits`, on the edges between them that `fixed` allows and that conflict with none of the kept
+// ones. Nothing when no edge is at 1 or no such matching exists (or none was found in time).
+// The solver's roots start their search from it (exact_solver.cpp) with a node limit: work, not
+// time, so that the incumbent and the result are the same on every run. On fertility's slider
+// (41 alphas) the roots' incumbents came out at the optimum or much closer to it (alpha 0, third
+// loop round: 1,792.50 where the dive and the Lagrangian repair gave 1,999.72, optimum 1,784.18),
+// the search trees had 19 % fewer nodes and P1 took 17 % less time.
+Incumbent complete_integral_part(const MatchingProblem& problem, const Adjacency& conflicts,
+                                 const std::vector<double>& x, const std::vector<Fixed>& fixed,
+                                 const SearchLimits& limits);
 
 // `cache` may be null.
 MatchingResult solve_exact(const MatchingProblem& problem, double time_limit,
