@@ -2,7 +2,10 @@
 // ports is built once (field, parameterization, separatrices, conflicts), then solve_layout() runs
 // at each alpha on it with one ExactSolverCache, as the wasm session does. Prints, per alpha, the
 // whole re-solve and its stages (P1 over all loop rounds, arcs and refinement, check), the rounds,
-// the branch-and-bound nodes and the layout's figures (patches, validity, objective, angle RSD).
+// the branch-and-bound nodes and the layout's figures (patches, validity, objective, angle RSD),
+// then the median and the largest re-solve and how many took 100 ms or more. `slider` for the
+// alphas stands for the page's 41 positions, 0 to 20 in steps of 0.5 (web/index.html).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -31,15 +34,33 @@ double stage_ms(const layout::QuadLayout& layout, const std::string& stage) {
   return 0;
 }
 
+// The alpha slider's positions in the page: 0 to 20 in steps of 0.5.
+std::vector<double> slider_positions() {
+  std::vector<double> alphas;
+  for (int step = 0; step <= 40; ++step) alphas.push_back(0.5 * step);
+  return alphas;
+}
+
+void print_summary(std::vector<double> totals) {
+  if (totals.empty()) return;
+  std::sort(totals.begin(), totals.end());
+  const auto slow = std::count_if(totals.begin(), totals.end(), [](double t) { return t >= 100; });
+  std::printf("%zu re-solves: median %.1f ms, largest %.1f ms, %lld of %zu took 100 ms or more\n",
+              totals.size(), totals[totals.size() / 2], totals.back(), static_cast<long long>(slow),
+              totals.size());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2 || std::string(argv[1]) == "--help") {
-    std::printf("usage: tessera_alpha_resolve <mesh> [alphas,... (default 5,20,1,0,5)]\n");
+    std::printf("usage: tessera_alpha_resolve <mesh> [alphas,... | slider (default 5,20,1,0,5)]\n");
     return argc < 2 ? 2 : 0;
   }
-  const std::vector<double> alphas = bench::number_list(argc > 2 ? argv[2] : "5,20,1,0,5");
   try {
+    const std::string list = argc > 2 ? argv[2] : "5,20,1,0,5";
+    const std::vector<double> alphas =
+        list == "slider" ? slider_positions() : bench::number_list(list);
     const Mesh mesh = triangulate(load_mesh_file(argv[1]).mesh);
     const Connectivity connectivity = build_connectivity(mesh);
     const FaceFrames frames = face_frames(mesh);
@@ -57,17 +78,20 @@ int main(int argc, char** argv) {
     std::printf("%6s %9s %8s %8s %8s %6s %6s %5s %6s %9s %6s\n", "alpha", "total ms", "P1 ms",
                 "arcs ms", "check ms", "rounds", "nodes", "|P|", "valid", "objective", "RSD %");
     matching::ExactSolverCache cache;
+    std::vector<double> totals;
     for (double alpha : alphas) {
       start = Clock::now();
       const layout::QuadLayout layout = layout::solve_layout(
           charts, graph, alpha, matching::SolverKind::exact, options.limits, Progress(), &cache);
       const double total = ms_since(start);
+      totals.push_back(total);
       std::printf("%6g %9.1f %8.1f %8.1f %8.1f %6d %6lld %5zu %6s %9.2f %6.2f\n", alpha, total,
                   stage_ms(layout, "P1"), stage_ms(layout, "layout"), stage_ms(layout, "check"),
                   layout.rounds, static_cast<long long>(layout.matching.nodes),
                   layout.check.patch_count, layout.check.valid() ? "yes" : "no",
                   layout.matching.objective, layout.angle_rsd);
     }
+    print_summary(totals);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tessera_alpha_resolve: %s\n", e.what());
     return 2;

@@ -34,29 +34,35 @@ int main(int argc, char** argv) {
         "  noise, mixed, seed   SyntheticLayoutSpec fields (defaults as in generate.h, seed 1)\n");
     return argc < 2 ? 2 : 0;
   }
-  const std::filesystem::path dir = argv[1];
-  const std::vector<double> pairs = tessera::bench::number_list(argc > 2 ? argv[2] : "24,30,40,50");
-  const std::vector<double> alphas = tessera::bench::number_list(argc > 3 ? argv[3] : "0,1,5,20");
-  SyntheticLayoutSpec base;
-  if (argc > 4) base.weight_noise = std::stod(argv[4]);
-  if (argc > 5) base.mixed_crossing_rate = std::stod(argv[5]);
-  if (argc > 6) base.seed = std::stoull(argv[6]);
-  std::filesystem::create_directories(dir);
-  for (double p : pairs) {
-    for (double alpha : alphas) {
-      SyntheticLayoutSpec spec = base;
-      spec.singularity_pairs = static_cast<std::uint32_t>(p);
-      spec.alpha = alpha;
-      // Longer separatrices on larger tori, as L_max grows with the surface (Sec. 6.8).
-      spec.max_length = p < 30 ? 8.0 : 10.0;
-      const auto problem = tessera::matching::synthetic_layout_instance(spec);
-      char name[64];
-      std::snprintf(name, sizeof name, "synthetic_%up_a%g", spec.singularity_pairs, alpha);
-      write(dir / (std::string(name) + ".json"), tessera::matching::write_instance_json(problem));
-      write(dir / (std::string(name) + ".lp"), tessera::matching::write_instance_lp(problem));
-      std::printf("%s: %zu edges, %zu conflict pairs\n", name, problem.edges.size(),
-                  problem.conflicts.size());
+  try {
+    const std::filesystem::path dir = argv[1];
+    const std::vector<double> pairs =
+        tessera::bench::number_list(argc > 2 ? argv[2] : "24,30,40,50");
+    const std::vector<double> alphas = tessera::bench::number_list(argc > 3 ? argv[3] : "0,1,5,20");
+    SyntheticLayoutSpec base;
+    if (argc > 4) base.weight_noise = tessera::bench::number(argv[4]);
+    if (argc > 5) base.mixed_crossing_rate = tessera::bench::number(argv[5]);
+    if (argc > 6) base.seed = static_cast<std::uint64_t>(tessera::bench::number(argv[6]));
+    std::filesystem::create_directories(dir);
+    for (double p : pairs) {
+      for (double alpha : alphas) {
+        SyntheticLayoutSpec spec = base;
+        spec.singularity_pairs = static_cast<std::uint32_t>(p);
+        spec.alpha = alpha;
+        // Longer separatrices on larger tori, as L_max grows with the surface (Sec. 6.8).
+        spec.max_length = p < 30 ? 8.0 : 10.0;
+        const auto problem = tessera::matching::synthetic_layout_instance(spec);
+        char name[64];
+        std::snprintf(name, sizeof name, "synthetic_%up_a%g", spec.singularity_pairs, alpha);
+        write(dir / (std::string(name) + ".json"), tessera::matching::write_instance_json(problem));
+        write(dir / (std::string(name) + ".lp"), tessera::matching::write_instance_lp(problem));
+        std::printf("%s: %zu edges, %zu conflict pairs\n", name, problem.edges.size(),
+                    problem.conflicts.size());
+      }
     }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tessera_p1_instances: %s\n", e.what());
+    return 2;
   }
   return 0;
 }
