@@ -348,6 +348,31 @@ TEST(MatchingNeighbourhood, AnIntegralPointIsItsOwnCompletion) {
                    .found);
 }
 
+// A path 0-1-2-3 with a chord 0-2 and a parallel edge 2-3: keeping edge 0-1 leaves nodes 2, 3
+// open with the edges between them that are allowed and in no conflict with 0-1.
+TEST(MatchingNeighbourhood, TheOpenPartHoldsTheCompatibleEdgesBetweenUncoveredNodes) {
+  MatchingProblem p;
+  p.is_virtual = {0, 0, 0, 1};
+  p.edges = {{0, 1, 1.0}, {1, 2, 2.0}, {2, 3, 3.0}, {0, 2, 4.0}, {2, 3, 5.0}, {3, 2, 6.0}};
+  p.conflicts = {{0, 4}, {2, 5}};  // 2-3 (weight 5) conflicts with the kept edge
+  const std::vector<std::uint8_t> allowed = {1, 1, 1, 1, 1, 0};  // and 3-2 is not allowed
+  const Component open = open_part(p, conflicting_edges(p), {0}, allowed);
+  EXPECT_EQ(open.node_of, (std::vector<std::uint32_t>{2, 3}));
+  EXPECT_EQ(open.problem.is_virtual, (std::vector<std::uint8_t>{0, 1}));
+  EXPECT_EQ(open.edge_of, (std::vector<std::uint32_t>{2}));
+  ASSERT_EQ(open.problem.edges.size(), 1u);
+  EXPECT_EQ(open.problem.edges[0].u, 0u);
+  EXPECT_EQ(open.problem.edges[0].v, 1u);
+  EXPECT_EQ(open.problem.edges[0].weight, 3.0);
+  EXPECT_TRUE(open.problem.conflicts.empty());  // its partner 3-2 is not in the open part
+  // Nothing kept: the whole problem, its allowed edges and the conflict pairs among them.
+  const Component all = open_part(p, conflicting_edges(p), {}, allowed);
+  EXPECT_EQ(all.edge_of, (std::vector<std::uint32_t>{0, 1, 2, 3, 4}));
+  ASSERT_EQ(all.problem.conflicts.size(), 1u);
+  EXPECT_EQ(all.problem.conflicts[0].first, 0u);
+  EXPECT_EQ(all.problem.conflicts[0].second, 4u);
+}
+
 TEST(MatchingBlossom, CoversPortsAtLeastWeightWithVirtualPorts) {
   for (std::uint64_t seed = 1; seed <= 200; ++seed) {
     MatchingProblem p = tiny_instance(seed);

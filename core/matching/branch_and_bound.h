@@ -30,10 +30,6 @@ struct SearchResult {
   std::uint64_t nodes = 0;
 };
 
-// `lp` holds the root relaxation with the preprocessing's fixings `root` applied; `exclusion` is
-// the exclusion graph whose violated cliques are separated at every node; `start` is the best
-// matching known so far (or none); `root_bound` a proven lower bound of P1 (e.g. the cheapest
-// matching without conflicts, which may exceed the relaxation's), the least bound of every node.
 struct SearchLimits {
   std::chrono::steady_clock::time_point deadline;
   // A node limit bounds the search by its work, not by the machine's speed: the same result on
@@ -41,6 +37,10 @@ struct SearchLimits {
   std::uint64_t max_nodes = UINT64_MAX;
 };
 
+// `lp` holds the root relaxation with the preprocessing's fixings `root` applied; `exclusion` is
+// the exclusion graph whose violated cliques are separated at every node; `start` is the best
+// matching known so far (or none); `root_bound` a proven lower bound of P1 (e.g. the cheapest
+// matching without conflicts, which may exceed the relaxation's), the least bound of every node.
 SearchResult branch_and_bound(const MatchingProblem& problem, LpRelaxation& lp,
                               const Adjacency& exclusion, const std::vector<Fixed>& root,
                               const IncumbentSearch& heuristics, Incumbent start, double root_bound,

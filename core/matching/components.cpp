@@ -60,4 +60,37 @@ std::vector<Component> split_components(const MatchingProblem& problem) {
   return components;
 }
 
+Component open_part(const MatchingProblem& problem, const Adjacency& conflicts,
+                    const std::vector<std::uint32_t>& kept,
+                    const std::vector<std::uint8_t>& allowed) {
+  const std::size_t m = problem.edges.size();
+  std::vector<std::int64_t> local(problem.node_count(), 0);
+  std::vector<std::uint8_t> blocked(m, 0);
+  for (std::uint32_t e : kept) {
+    local[problem.edges[e].u] = local[problem.edges[e].v] = -1;
+    for (std::uint32_t f : conflicts.of(e)) blocked[f] = 1;
+  }
+  Component open;
+  for (std::uint32_t v = 0; v < problem.node_count(); ++v) {
+    if (local[v] < 0) continue;
+    local[v] = static_cast<std::int64_t>(open.node_of.size());
+    open.node_of.push_back(v);
+    open.problem.is_virtual.push_back(problem.is_virtual[v]);
+  }
+  std::vector<std::int64_t> open_edge(m, -1);
+  for (std::uint32_t e = 0; e < m; ++e) {
+    const MatchingEdge& edge = problem.edges[e];
+    if (!allowed[e] || blocked[e] || local[edge.u] < 0 || local[edge.v] < 0) continue;
+    open_edge[e] = static_cast<std::int64_t>(open.edge_of.size());
+    open.problem.edges.push_back({static_cast<std::uint32_t>(local[edge.u]),
+                                  static_cast<std::uint32_t>(local[edge.v]), edge.weight});
+    open.edge_of.push_back(e);
+  }
+  for (std::uint32_t i = 0; i < open.edge_of.size(); ++i)
+    for (std::uint32_t f : conflicts.of(open.edge_of[i]))
+      if (f > open.edge_of[i] && open_edge[f] >= 0)
+        open.problem.conflicts.push_back({i, static_cast<std::uint32_t>(open_edge[f])});
+  return open;
+}
+
 }  // namespace tessera::matching

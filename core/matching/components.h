@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "matching/adjacency.h"
 #include "matching/problem.h"
 
 namespace tessera::matching {
@@ -17,5 +18,12 @@ struct Component {
 
 // In increasing order of their smallest node; a single component keeps the original numbering.
 std::vector<Component> split_components(const MatchingProblem& problem);
+
+// The P1 that the matching `kept` leaves open: the nodes it does not cover, the edges between them
+// that `allowed` admits and that conflict with none of kept's (`conflicts`: conflicting_edges() of
+// the problem), and the conflict pairs among those edges.
+Component open_part(const MatchingProblem& problem, const Adjacency& conflicts,
+                    const std::vector<std::uint32_t>& kept,
+                    const std::vector<std::uint8_t>& allowed);
 
 }  // namespace tessera::matching

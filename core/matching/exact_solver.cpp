@@ -303,46 +303,21 @@ MatchingResult solve_all(const MatchingProblem& problem, std::vector<ComponentSt
 Incumbent complete_integral_part(const MatchingProblem& problem, const Adjacency& conflicts,
                                  const std::vector<double>& x, const std::vector<Fixed>& fixed,
                                  const SearchLimits& limits) {
-  const std::size_t m = problem.edges.size();
   std::vector<std::uint32_t> kept;
-  std::vector<std::int64_t> local(problem.node_count(), 0);
-  for (std::uint32_t e = 0; e < m; ++e) {
-    if (x[e] <= 1.0 - kIntegral) continue;
-    kept.push_back(e);
-    local[problem.edges[e].u] = local[problem.edges[e].v] = -1;
-  }
-  MatchingProblem open;
-  for (std::size_t v = 0; v < local.size(); ++v) {
-    if (local[v] < 0) continue;
-    local[v] = static_cast<std::int64_t>(open.node_count());
-    open.is_virtual.push_back(problem.is_virtual[v]);
-  }
+  for (std::uint32_t e = 0; e < x.size(); ++e)
+    if (x[e] > 1.0 - kIntegral) kept.push_back(e);
   if (kept.empty()) return {};
-  std::vector<std::uint8_t> blocked(m, 0);
-  for (std::uint32_t e : kept)
-    for (std::uint32_t f : conflicts.of(e)) blocked[f] = 1;
-  std::vector<std::int64_t> open_edge(m, -1);
-  std::vector<std::uint32_t> edge_of;
-  for (std::uint32_t e = 0; e < m; ++e) {
-    const MatchingEdge& edge = problem.edges[e];
-    if (blocked[e] || fixed[e] == Fixed::zero || local[edge.u] < 0 || local[edge.v] < 0) continue;
-    open_edge[e] = static_cast<std::int64_t>(open.edges.size());
-    open.edges.push_back({static_cast<std::uint32_t>(local[edge.u]),
-                          static_cast<std::uint32_t>(local[edge.v]), edge.weight});
-    edge_of.push_back(e);
-  }
-  for (const ConflictPair& c : problem.conflicts)
-    if (open_edge[c.first] >= 0 && open_edge[c.second] >= 0)
-      open.conflicts.push_back({static_cast<std::uint32_t>(open_edge[c.first]),
-                                static_cast<std::uint32_t>(open_edge[c.second])});
-  std::vector<ComponentStructure> parts = prepare(open);
-  const SolveMode mode{limits, false};
-  const MatchingResult rest = solve_all(open, parts, Clock::now(), mode, Progress());
+  std::vector<std::uint8_t> allowed(fixed.size());
+  for (std::size_t e = 0; e < fixed.size(); ++e) allowed[e] = fixed[e] != Fixed::zero;
+  const Component open = open_part(problem, conflicts, kept, allowed);
+  std::vector<ComponentStructure> parts = prepare(open.problem);
+  const MatchingResult rest =
+      solve_all(open.problem, parts, Clock::now(), SolveMode{limits, false}, Progress());
   if (!rest.has_solution()) return {};
   Incumbent found;
   found.found = true;
   found.edges = std::move(kept);
-  for (std::uint32_t e : rest.edges) found.edges.push_back(edge_of[e]);
+  for (std::uint32_t e : rest.edges) found.edges.push_back(open.edge_of[e]);
   std::sort(found.edges.begin(), found.edges.end());
   found.objective = objective_of(problem, found.edges);
   return found;

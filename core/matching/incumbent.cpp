@@ -5,6 +5,7 @@
 
 #include "matching/blossom.h"
 #include "matching/check.h"
+#include "matching/components.h"
 
 namespace tessera::matching {
 
@@ -119,30 +120,13 @@ std::vector<std::uint32_t> IncumbentSearch::conflicting_members(
 // nodes nor conflict with `kept`, at least weight; false if impossible.
 bool IncumbentSearch::fill(std::vector<std::uint32_t>& kept,
                            const std::vector<double>& weights) const {
-  const std::vector<std::uint8_t> chosen = mask_of(kept, problem_.edges.size());
-  std::vector<std::int64_t> local(problem_.node_count(), 0);
-  for (std::uint32_t e : kept) local[problem_.edges[e].u] = local[problem_.edges[e].v] = -1;
-  MatchingProblem open;
-  for (std::size_t v = 0; v < local.size(); ++v) {
-    if (local[v] < 0) continue;
-    local[v] = static_cast<std::int64_t>(open.node_count());
-    open.is_virtual.push_back(problem_.is_virtual[v]);
-  }
-  std::vector<std::uint32_t> edge_of;
+  const Component open = open_part(problem_, conflicts_, kept, allowed_);
   std::vector<double> open_weights;
-  for (std::uint32_t e = 0; e < problem_.edges.size(); ++e) {
-    const MatchingEdge& edge = problem_.edges[e];
-    if (!allowed_[e] || local[edge.u] < 0 || local[edge.v] < 0 || !conflict_free_with(e, chosen))
-      continue;
-    open.edges.push_back({static_cast<std::uint32_t>(local[edge.u]),
-                          static_cast<std::uint32_t>(local[edge.v]), edge.weight});
-    open_weights.push_back(weights[e]);
-    edge_of.push_back(e);
-  }
-  const PortCover cover =
-      min_weight_port_cover(open, open_weights, std::vector<std::uint8_t>(edge_of.size(), 1));
+  for (std::uint32_t e : open.edge_of) open_weights.push_back(weights[e]);
+  const PortCover cover = min_weight_port_cover(open.problem, open_weights,
+                                                std::vector<std::uint8_t>(open.edge_of.size(), 1));
   if (!cover.exists) return false;
-  for (std::uint32_t e : cover.edges) kept.push_back(edge_of[e]);
+  for (std::uint32_t e : cover.edges) kept.push_back(open.edge_of[e]);
   std::sort(kept.begin(), kept.end());
   return true;
 }
