@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -180,6 +181,65 @@ TEST(FieldDesign, DirectionsRoundTrip) {
       cross_field_from_directions(r.mesh, r.connectivity, r.frames, r.field.direction);
   EXPECT_EQ(again.vertex_index, r.field.vertex_index);
   EXPECT_EQ(again.period_jump, r.field.period_jump);
+}
+
+// A flat disk of two rings of `n` vertices around vertex 0; the centre and the first ring are
+// interior.
+Mesh two_ring_disk(int n) {
+  std::vector<Eigen::Vector3d> positions{Eigen::Vector3d::Zero()};
+  for (int ring = 1; ring <= 2; ++ring)
+    for (int i = 0; i < n; ++i) {
+      const double phi = 2 * std::numbers::pi * (i + 0.5 * ring) / n;
+      positions.push_back(ring * Eigen::Vector3d(std::cos(phi), std::sin(phi), 0));
+    }
+  std::vector<std::array<Index, 3>> triangles;
+  const auto inner = [n](int i) { return Index(1 + (i % n)); };
+  const auto outer = [n](int i) { return Index(1 + n + (i % n)); };
+  for (int i = 0; i < n; ++i) {
+    triangles.push_back({0, inner(i), inner(i + 1)});
+    triangles.push_back({inner(i), outer(i), inner(i + 1)});
+    triangles.push_back({inner(i + 1), outer(i), outer(i + 1)});
+  }
+  return triangle_mesh(std::move(positions), triangles);
+}
+
+// A vertex of index 1/2 or 3/4 (the cross turning k quarter turns around the disk's centre) is
+// split into k singularities of index 1/4 at the centre and its neighbours, by k - 1 period jumps
+// that leave principal matching; the index sum stays.
+TEST(FieldDesign, MergedSingularitiesAreSplitIntoValenceThree) {
+  for (int quarters : {1, 2, 3}) {
+    Fielded r{two_ring_disk(12), {}, {}, {}};
+    r.connectivity = build_connectivity(r.mesh);
+    r.frames = face_frames(r.mesh);
+    std::vector<Eigen::Vector3d> directions;
+    for (Index f = 0; f < r.mesh.face_count(); ++f) {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (Index v : r.mesh.face(f)) centre += r.mesh.positions[v] / 3;
+      const double turned = quarters / 4.0 * std::atan2(centre.y(), centre.x());
+      directions.push_back({std::cos(turned), std::sin(turned), 0});
+    }
+    r.field = cross_field_from_directions(r.mesh, r.connectivity, r.frames, directions);
+    expect_poincare_hopf(r, 1);
+    int split = 0;
+    for (const Singularity& s : r.field.singularities) {
+      if (r.connectivity.is_boundary_vertex(s.vertex)) continue;
+      EXPECT_EQ(s.valence, 3) << "vertex " << s.vertex;
+      EXPECT_TRUE(s.vertex == 0 || r.mesh.positions[s.vertex].norm() < 1.5) << s.vertex;
+      ++split;
+    }
+    EXPECT_EQ(split, quarters);
+    int unprincipal = 0;
+    for (Index h = 0; h < r.connectivity.corner_count; ++h) {
+      const Index t = r.connectivity.twin[h];
+      if (r.connectivity.is_boundary_halfedge(t)) continue;
+      const double delta = std::remainder(
+          r.field.angle[r.connectivity.face[t]] - r.field.angle[r.connectivity.face[h]] -
+              r.field.kappa[h] + r.field.period_jump[h] * std::numbers::pi / 2,
+          2 * std::numbers::pi);
+      unprincipal += std::abs(delta) > std::numbers::pi / 4 + 1e-12;
+    }
+    EXPECT_EQ(unprincipal, 2 * (quarters - 1));  // both halfedges of each changed edge
+  }
 }
 
 TEST(FieldDesign, RejectsBadInput) {

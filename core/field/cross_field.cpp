@@ -19,8 +19,9 @@ CrossField cross_field_from_angles(const Mesh& mesh, const Connectivity& connect
   }
   field.kappa = connection_angles(mesh, connectivity, frames);
   Matching matching = principal_matching(connectivity, angle, field.kappa);
-  field.period_jump = std::move(matching.period_jump);
   field.vertex_index = vertex_indices(mesh, connectivity, frames, angle, matching.turn);
+  split_merged_singularities(connectivity, matching, field.vertex_index);
+  field.period_jump = std::move(matching.period_jump);
   field.singularities = singularities(connectivity, field.vertex_index);
   field.euler_characteristic = surface_topology(mesh, connectivity).euler_characteristic;
   long quarter_sum = 0;

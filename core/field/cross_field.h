@@ -8,7 +8,9 @@
 //    those of face j, e|T_j = J^p_ij e|T_i, where a face's chart measures a tangent vector x as
 //    (<x, u_T>, <x, v_T>). The field angles then satisfy
 //    theta_j = theta_i + kappa_ij - p_ij * pi/2 + delta_ij with |delta_ij| <= pi/4 (principal
-//    matching picks the p_ij with the smallest |delta_ij|); p_ji = -p_ij mod 4.
+//    matching picks the p_ij with the smallest |delta_ij|), except on the few edges where a
+//    vertex of index 1/2 or more was split (field_topology.h, split_merged_singularities());
+//    p_ji = -p_ij mod 4.
 //  - Index of an interior vertex: (angle defect + sum of delta around it ccw) / 2pi, a multiple of
 //    1/4; valence = 4 - 4 * index (index 1/4: valence 3, index -1/4: valence 5), the number of
 //    ports (Def. 2.3, 2.4).
@@ -48,8 +50,8 @@ struct CrossField {
   double index_sum = 0;                    // sum of all vertex indices (Poincare-Hopf: == chi)
 };
 
-// The cross field with the given per-face angles: connection, principal matching, indices,
-// singularities (field_topology.h). `angle` has one entry per face.
+// The cross field with the given per-face angles: connection, principal matching, indices, merged
+// singularities split, singularities (field_topology.h). `angle` has one entry per face.
 CrossField cross_field_from_angles(const Mesh& mesh, const Connectivity& connectivity,
                                    const FaceFrames& frames, std::vector<double> angle);
 

@@ -78,6 +78,46 @@ std::vector<int> vertex_indices(const Mesh& mesh, const Connectivity& c, const F
   return index;
 }
 
+namespace {
+
+// The halfedge x -> v of the interior neighbour x of v that split_merged_singularities() moves a
+// quarter of v's index to, or kNoIndex.
+Index quarter_target(const Connectivity& c, const Matching& matching,
+                     const std::vector<int>& vertex_index, Index v) {
+  Index best = kNoIndex;
+  for (Index h : outgoing_halfedges(c, v)) {
+    const Index into_v = c.twin[h];
+    const Index x = c.to_vertex[h];
+    if (c.is_boundary_vertex(x) || vertex_index[x] > 0) continue;
+    if (best == kNoIndex || matching.turn[into_v] > matching.turn[best]) best = into_v;
+  }
+  return best;
+}
+
+}  // namespace
+
+void split_merged_singularities(const Connectivity& c, Matching& matching,
+                                std::vector<int>& vertex_index) {
+  for (Index v = 0; v < c.vertex_count(); ++v) {
+    if (c.is_boundary_vertex(v)) continue;
+    while (vertex_index[v] >= 2) {
+      // v's index counts the turn of every halfedge into v (vertex_indices()), its neighbour's
+      // the twin's: a quarter less turn into v moves a quarter of index from v to the neighbour.
+      const Index into_v = quarter_target(c, matching, vertex_index, v);
+      if (into_v == kNoIndex) break;
+      const Index out_of_v = c.twin[into_v];
+      matching.turn[into_v] -= kQuarter;
+      matching.turn[out_of_v] += kQuarter;
+      matching.period_jump[into_v] =
+          static_cast<std::uint8_t>((matching.period_jump[into_v] + 3) % 4);
+      matching.period_jump[out_of_v] =
+          static_cast<std::uint8_t>((matching.period_jump[out_of_v] + 1) % 4);
+      --vertex_index[v];
+      ++vertex_index[c.to_vertex[out_of_v]];
+    }
+  }
+}
+
 std::vector<Singularity> singularities(const Connectivity& c, const std::vector<int>& index) {
   std::vector<Singularity> result;
   for (Index v = 0; v < index.size(); ++v) {

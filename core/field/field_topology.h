@@ -27,6 +27,17 @@ std::vector<int> vertex_indices(const Mesh& mesh, const Connectivity& connectivi
                                 const FaceFrames& frames, const std::vector<double>& angle,
                                 const std::vector<double>& turn);
 
+// A vertex of index 1/2 or more (valence 2 or less) is no node of a quad layout (Def. 2.3): where
+// two ports leave it, each of its two patches has a corner there that no third side marks, and a
+// single port is an arc ending inside a patch. Such vertices are two or three index-1/4
+// singularities that the mesh resolution merged into one. Each interior one gives a quarter of its
+// index at a time to an interior neighbour of index 0 or less (a valence-5 neighbour cancels),
+// across the edge whose turn is closest to the opposite quarter, by changing that edge's period
+// jump (its turn then leaves [-pi/4, pi/4]); the indices are updated. Poincare-Hopf is kept. A
+// vertex with no such neighbour is left as it is.
+void split_merged_singularities(const Connectivity& connectivity, Matching& matching,
+                                std::vector<int>& vertex_index);
+
 // The vertices with nonzero index, by vertex number, with their valence.
 std::vector<Singularity> singularities(const Connectivity& connectivity,
                                        const std::vector<int>& vertex_index);
