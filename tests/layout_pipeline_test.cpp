@@ -4,8 +4,10 @@
 // space (a flat quadrilateral); the same input gives the same layout.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numeric>
 
+#include "field/field_topology.h"
 #include "layout/layout_json.h"
 #include "layout/metrics.h"
 #include "layout/quad_layout.h"
@@ -83,6 +85,36 @@ TEST(QuadLayout, SameInputSameLayout) {
   jb.erase("seconds");
   EXPECT_EQ(ja, jb);
   EXPECT_EQ(a.layout.refined.mesh.face_attributes, b.layout.refined.mesh.face_attributes);
+}
+
+// A constant direction projected onto a sphere turns a full turn around the two points where it
+// is normal; the bisector of two such fields, for directions a and c, turns half a turn: index
+// 1/2 (two ports) at +-a and +-c. The field splits each into two singularities of valence 3
+// (field_topology.h), and their layout is valid.
+TEST(QuadLayout, FieldOfIndexOneHalfIsSplitAndValid) {
+  const Mesh sphere = icosphere(3);
+  const Eigen::Vector3d a = sphere.positions[0].normalized();
+  Index far = 0;  // the vertex nearest a quarter turn from a
+  for (Index v = 0; v < sphere.vertex_count(); ++v)
+    if (std::abs(sphere.positions[v].dot(a)) < std::abs(sphere.positions[far].dot(a))) far = v;
+  const Eigen::Vector3d c = sphere.positions[far].normalized();
+  std::vector<int> merged;
+  const LayoutRun run = run_layout(test::parameterized_with(
+      sphere, [&](const Mesh& m, const Connectivity& connectivity, const FaceFrames& frames) {
+        std::vector<double> angle(m.face_count());
+        for (Index f = 0; f < m.face_count(); ++f)
+          angle[f] = (frames.angle(f, a) + frames.angle(f, c)) / 2;
+        const CrossField field = cross_field_from_angles(m, connectivity, frames, angle);
+        const Matching principal = principal_matching(connectivity, field.angle, field.kappa);
+        merged = vertex_indices(m, connectivity, frames, field.angle, principal.turn);
+        return field;
+      }));
+  EXPECT_EQ(std::count(merged.begin(), merged.end(), 2), 4);  // before the split
+  EXPECT_EQ(std::count(merged.begin(), merged.end(), 0), merged.size() - 4);
+  expect_valid_layout(run);
+  ASSERT_EQ(run.graph.graph.ports.points.size(), 8u);
+  for (const layout::SingularPoint& point : run.graph.graph.ports.points)
+    EXPECT_EQ(point.valence, 3);
 }
 
 TEST(QuadLayout, SurfaceWithoutSingularitiesHasNoLayout) {

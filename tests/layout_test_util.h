@@ -91,14 +91,24 @@ inline Eigen::Vector2d world_direction(const Parameterized& p, Index f, const Ei
           std::sin(turn) * d.x() + std::cos(turn) * d.y()};
 }
 
-inline Parameterized parameterized(Mesh mesh, FieldOptions field = {}) {
+// The parameterization of the mesh with the field that make_field(mesh, connectivity, frames)
+// returns.
+template <class MakeField>
+Parameterized parameterized_with(Mesh mesh, const MakeField& make_field) {
   Parameterized p{std::move(mesh), {}, {}};
   p.connectivity = build_connectivity(p.mesh);
   const FaceFrames frames = face_frames(p.mesh);
-  const CrossField cross = design_cross_field(p.mesh, p.connectivity, frames, field, Progress());
+  const CrossField cross = make_field(p.mesh, p.connectivity, frames);
   p.param =
       seamless_parameterization(p.mesh, p.connectivity, frames, cross, ParamOptions{}, Progress());
   return p;
+}
+
+inline Parameterized parameterized(Mesh mesh, FieldOptions field = {}) {
+  return parameterized_with(
+      std::move(mesh), [&field](const Mesh& m, const Connectivity& c, const FaceFrames& frames) {
+        return design_cross_field(m, c, frames, field, Progress());
+      });
 }
 
 // A mesh through the whole pipeline: field, parameterization, graph G, layout at alpha.
@@ -108,13 +118,17 @@ struct LayoutRun {
   layout::QuadLayout layout;
 };
 
-inline LayoutRun run_layout(Mesh mesh, double alpha = 5) {
-  LayoutRun run{parameterized(std::move(mesh)), {}, {}};
+inline LayoutRun run_layout(Parameterized input, double alpha = 5) {
+  LayoutRun run{std::move(input), {}, {}};
   const layout::LayoutOptions options;
   run.graph = layout::build_layout_graph(run.input.charts(), options, Progress());
   run.layout = layout::solve_layout(run.input.charts(), run.graph, alpha,
                                     matching::SolverKind::exact, options.limits, Progress());
   return run;
+}
+
+inline LayoutRun run_layout(Mesh mesh, double alpha = 5) {
+  return run_layout(parameterized(std::move(mesh)), alpha);
 }
 
 }  // namespace tessera::test
