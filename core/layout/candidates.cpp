@@ -33,7 +33,7 @@ EdgeCollector::EdgeCollector(std::size_t line_count, double rho)
 
 Index EdgeCollector::try_edge(PortGraph& graph, Index base, double base_length,
                               const Eigen::Vector2d& d_base, Index height, double height_length,
-                              const Eigen::Vector2d& d_height, Index crossing) {
+                              const Eigen::Vector2d& d_height) {
   // The far singularity s = m - L_height d_height lies on the right of the base line iff
   // cross(d_base, d_height) > 0; the edge then ends at the port after the height's, else before.
   const int side = cross(d_base, d_height) > 0 ? 1 : -1;
@@ -52,20 +52,19 @@ Index EdgeCollector::try_edge(PortGraph& graph, Index base, double base_length,
   edge.base = base_length;
   edge.height = height_length;
   edge.side = side;
-  edge.crossing = crossing;
   graph.edges.push_back(edge);
   return static_cast<Index>(graph.edges.size() - 1);
 }
 
-void EdgeCollector::add_c1_edges(PortGraph& graph, const Crossing& m, Index crossing) {
+void EdgeCollector::add_c1_edges(PortGraph& graph, const Crossing& m) {
   const bool diagonal = nearly_equal(m.length_a, m.length_b);
   Index from_a = kNoIndex, from_b = kNoIndex;
   if (diagonal || m.length_a > m.length_b)
-    from_a = try_edge(graph, m.line_a, m.length_a, m.direction_a, m.line_b, m.length_b,
-                      m.direction_b, crossing);
+    from_a =
+        try_edge(graph, m.line_a, m.length_a, m.direction_a, m.line_b, m.length_b, m.direction_b);
   if (diagonal || m.length_b > m.length_a)
-    from_b = try_edge(graph, m.line_b, m.length_b, m.direction_b, m.line_a, m.length_a,
-                      m.direction_a, crossing);
+    from_b =
+        try_edge(graph, m.line_b, m.length_b, m.direction_b, m.line_a, m.length_a, m.direction_a);
   if (diagonal && from_a != kNoIndex && from_b != kNoIndex) {
     graph.edges[from_a].diagonal = graph.edges[from_b].diagonal = true;
     graph.zero_area.push_back({std::min(from_a, from_b), std::max(from_a, from_b)});
@@ -97,9 +96,8 @@ std::vector<Index> EdgeCollector::spiral_test(const PortGraph& graph, const Cros
 }
 
 std::vector<Index> EdgeCollector::on_crossing(PortGraph& graph, const Crossing& m) {
-  const Index index = static_cast<Index>(graph.crossings.size());
-  graph.crossings.push_back(m);
-  add_c1_edges(graph, m, index);
+  ++graph.crossing_count;
+  add_c1_edges(graph, m);
   if (m.line_a == m.line_b) return {};
   return spiral_test(graph, m);
 }

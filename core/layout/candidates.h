@@ -24,8 +24,8 @@ class EdgeCollector {
  public:
   EdgeCollector(std::size_t line_count, double rho);
 
-  // Adds m to graph.crossings and its C1 edges to graph.edges. Returns the lines the spiral test
-  // stops at m.
+  // Counts m in graph.crossing_count and adds its C1 edges to graph.edges. Returns the lines the
+  // spiral test stops at m.
   std::vector<Index> on_crossing(PortGraph& graph, const Crossing& m);
   // Separatrix `line` reached the singularity of port `port_hit` after `length`, passing it at the
   // signed distance `offset` (left > 0): the edge's base and height.
@@ -36,9 +36,8 @@ class EdgeCollector {
 
  private:
   Index try_edge(PortGraph& graph, Index base, double base_length, const Eigen::Vector2d& d_base,
-                 Index height, double height_length, const Eigen::Vector2d& d_height,
-                 Index crossing);
-  void add_c1_edges(PortGraph& graph, const Crossing& m, Index crossing);
+                 Index height, double height_length, const Eigen::Vector2d& d_height);
+  void add_c1_edges(PortGraph& graph, const Crossing& m);
   std::vector<Index> spiral_test(const PortGraph& graph, const Crossing& m);
 
   double rho_;

@@ -219,8 +219,7 @@ void SeparatrixGrowth::discover(const SeparatrixPiece& a, const SeparatrixPiece&
   m.direction_a = first.direction;
   m.direction_b = second.direction;
   if (!is_new(m)) return;
-  pending_crossings_.push_back(m);
-  events_.push({m.time(), 1, static_cast<Index>(pending_crossings_.size() - 1)});
+  events_.push({m.time(), 1, crossings_found_++, m});
 }
 
 bool SeparatrixGrowth::is_new(const Crossing& m) {
@@ -242,7 +241,7 @@ void SeparatrixGrowth::handle_events_until(double time) {
 
 void SeparatrixGrowth::handle(const Event& event) {
   if (event.kind == 1) {
-    const Crossing& m = pending_crossings_[event.index];
+    const Crossing& m = event.crossing;
     if (m.length_a > graph_.separatrices[m.line_a].stop ||
         m.length_b > graph_.separatrices[m.line_b].stop)
       return;

@@ -50,10 +50,13 @@ class SeparatrixGrowth {
   PortGraph take_graph() { return std::move(graph_); }
 
  private:
+  // A crossing waits in its event, so that only the pending ones are held (a dragon grows more
+  // than 8 million).
   struct Event {
     double time = 0;
-    int kind = 0;  // 0: a separatrix end, 1: a crossing
-    Index index = 0;
+    int kind = 0;     // 0: a separatrix end, 1: a crossing
+    Index index = 0;  // kind 0: into pending_ends_; kind 1: the crossing's number, in order found
+    Crossing crossing;
     bool operator>(const Event& o) const {
       return std::tie(time, kind, index) > std::tie(o.time, o.kind, o.index);
     }
@@ -90,7 +93,7 @@ class SeparatrixGrowth {
   EdgeCollector collector_;
   std::vector<LineCursor> cursors_;
   std::vector<std::vector<Index>> face_pieces_;
-  std::vector<Crossing> pending_crossings_;
+  Index crossings_found_ = 0;
   std::vector<PendingEnd> pending_ends_;
   std::map<std::pair<Index, Index>, std::vector<std::pair<double, double>>> found_;
   std::priority_queue<Event, std::vector<Event>, std::greater<>> events_;

@@ -1,5 +1,6 @@
 // The graph of the ports G (thesis Ch. 4, Sec. 6.7-6.8) as a value: the open separatrices grown
-// from every port, the intersection points K where condition C1 produced edges, the edges of G
+// from every port, the count of the
+// intersection points K met, the edges of G
 // (closed separatrices between two ports, or a port and a virtual port on the boundary, Sec. 4.4),
 // and the conflict pairs I (Sec. 4.6, with the zero-area pairs Z of Remark 4.2).
 //
@@ -80,8 +81,7 @@ struct GraphEdge {
   // +1 if the height line runs along +J d_base at the crossing (the far singularity lies on the
   // right of the base line), -1 if along -J d_base.
   int side = 1;
-  Index crossing = kNoIndex;  // into PortGraph::crossings, kind == crossing only
-  bool diagonal = false;      // case 3 of C1 (L_a = L_b): one of a zero-area pair
+  bool diagonal = false;  // case 3 of C1 (L_a = L_b): one of a zero-area pair
 };
 
 // A virtual port (Sec. 4.4): where a separatrix leaves the surface.
@@ -102,7 +102,9 @@ struct PortGraph {
   Ports ports;
   std::vector<Separatrix> separatrices;  // one per port
   std::vector<SeparatrixPiece> pieces;
-  std::vector<Crossing> crossings;  // every intersection of two separatrices (or one with itself)
+  // Intersections of two separatrices (or of one with itself) reached while growing, whether
+  // or not C1 made edges of them.
+  std::size_t crossing_count = 0;
   std::vector<GraphEdge> edges;
   std::vector<VirtualPort> virtual_ports;  // node ports.ports.size() + i
   std::vector<EdgePair> zero_area;         // Z (Remark 4.2)

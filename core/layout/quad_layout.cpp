@@ -40,10 +40,13 @@ class StageClock {
 
 }  // namespace
 
-LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& options,
-                               const Progress& progress) {
-  LayoutGraph result;
-  StageClock clock(result.seconds);
+namespace {
+
+// The separatrices grown to L_max and, while G has no perfect matching, to L_max doubled (Sec.
+// 5.1): the graph, its straight arcs, and what the growth found. The growth's working memory (the
+// crossings pending, those seen, the spiral test's last crossings) goes when it returns.
+void grow_graph(const Charts& charts, const LayoutOptions& options, const Progress& progress,
+                LayoutGraph& result) {
   SeparatrixGrowth growth(
       charts, find_ports(charts),
       {options.rho, options.limits.max_trace_steps, options.limits.max_trace_seconds});
@@ -59,10 +62,19 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
     result.unmatchable_ports =
         matching::deficient_ports(problem, std::vector<std::uint8_t>(problem.edges.size(), 1));
     if (result.unmatchable_ports.empty() || result.length_doublings == options.max_length_doublings)
-      break;
+      return;
     length_limit *= 2;
     ++result.length_doublings;
   }
+}
+
+}  // namespace
+
+LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& options,
+                               const Progress& progress) {
+  LayoutGraph result;
+  StageClock clock(result.seconds);
+  grow_graph(charts, options, progress, result);
   result.twin_edges = merge_twin_edges(result.graph, result.arcs);
   clock.stage_done("separatrices");
   result.graph.conflicts = illegal_crossings(charts, result.graph, result.arcs, progress);
