@@ -170,6 +170,13 @@ double base_turn(const ArcStart& start) {
   return std::atan2(cross(d, start.base), d.dot(start.base));
 }
 
+// The arc of `pieces` without the spare capacity they grew with (on dragon: 8.7 million pieces in
+// the 63,000 arcs).
+Arc arc_of(Index edge, std::vector<ArcPiece> pieces, double length, double turn) {
+  pieces.shrink_to_fit();
+  return Arc{edge, std::move(pieces), length, turn};
+}
+
 }  // namespace
 
 // From the base port; where that fails (a folded singular ring at the start), from the far port.
@@ -178,11 +185,11 @@ std::optional<Arc> trace_arc(const Charts& charts, const PortGraph& graph, Index
   const double length = std::hypot(edge.base, edge.height);
   if (std::optional<ArcStart> start = arc_start(charts, graph, edge, false))
     if (std::optional<std::vector<ArcPiece>> pieces = trace_straight(charts, graph, *start))
-      return Arc{edge_index, std::move(*pieces), length, base_turn(*start)};
+      return arc_of(edge_index, std::move(*pieces), length, base_turn(*start));
   if (edge.kind == EdgeKind::boundary) return std::nullopt;
   if (std::optional<ArcStart> start = arc_start(charts, graph, edge, true))
     if (std::optional<std::vector<ArcPiece>> back = trace_straight(charts, graph, *start))
-      return Arc{edge_index, reversed(std::move(*back)), length, base_turn(*start)};
+      return arc_of(edge_index, reversed(std::move(*back)), length, base_turn(*start));
   return std::nullopt;
 }
 
