@@ -51,6 +51,7 @@ void print_layout_help() {
       "                       solver, matching_status, lower_bound, curved_edges,\n"
       "                       twin_edges, loop_conflicts,\n"
       "                       length_limit, length_doublings, unmatchable_ports,\n"
+      "                       folded_singularities,\n"
       "                       average_separatrix_length, problems (the first 12),\n"
       "                       problem_count\n"
       "  --max-trace-steps N  faces crossed by all separatrices together (default 20000000)\n"
@@ -79,6 +80,29 @@ layout::LayoutOptions layout_options(const ParsedArgs& parsed) {
   return options;
 }
 
+// Why P1 has no solution, when G has no perfect matching: the ports none covers, and the folded
+// singular rings that leave singularities with fewer ports than their valence.
+std::string no_matching_text(const nlohmann::ordered_json& json) {
+  const auto list = [](const nlohmann::ordered_json& items) {
+    std::string text;
+    for (std::size_t k = 0; k < items.size() && k < 12; ++k)
+      text += (k ? ", " : "") + items[k].dump();
+    return items.size() > 12 ? text + ", ..." : text;
+  };
+  std::string result;
+  const auto& unmatchable = json["unmatchable_ports"];
+  if (!unmatchable.empty())
+    result += "  G has no perfect matching: no matching covers ports " + list(unmatchable) +
+              " (L_max doubled " + json["length_doublings"].dump() + " times)\n";
+  const auto& folded = json["folded_singularities"];
+  if (!unmatchable.empty() && !folded.empty())
+    result += "  the parameterization folds the rings of " + std::to_string(folded.size()) +
+              " singularities (vertices " + list(folded) +
+              "): flipped triangles leave them fewer ports than their valence; a smoother field "
+              "avoids this\n";
+  return result;
+}
+
 std::string layout_text(const nlohmann::ordered_json& json) {
   char text[512];
   std::snprintf(
@@ -91,6 +115,7 @@ std::string layout_text(const nlohmann::ordered_json& json) {
       json["patches"].get<int>(), json["nodes"].get<int>(), json["arcs"].get<int>(),
       json["angle_rsd"].get<double>(), json["valid"].get<bool>() ? "valid" : "INVALID");
   std::string result = text;
+  result += no_matching_text(json);
   for (const auto& problem : json["problems"]) result += "  " + problem.get<std::string>() + "\n";
   if (json["problem_count"].get<std::size_t>() > json["problems"].size())
     result +=

@@ -9,6 +9,7 @@
 
 #include "layout/conflicts.h"
 #include "layout/growth.h"
+#include "layout/layout_json.h"
 #include "layout_test_util.h"
 #include "mesh/geometry.h"
 #include "mesh/shapes.h"
@@ -109,6 +110,23 @@ TEST_P(FlatGridGrowth, LinesIntoASingularityAreOneClosedSeparatrix) {
   }
   EXPECT_EQ(g.virtual_ports.size(), 6u);
   EXPECT_EQ(g.crossing_count, 0u);
+}
+
+// A singular point whose ring holds a flipped triangle (its corner moved across the far edge in
+// that face's chart) is reported among the folded singularities; the others are not.
+TEST(FoldedRings, AreReportedByVertex) {
+  test::Parameterized p =
+      test::flat_parameterized(test::flat_grid(kGrid), 0, {grid_vertex(2, 2), grid_vertex(5, 5)});
+  const Index folded = grid_vertex(5, 5);
+  const Index corner = p.connectivity.vertex_halfedge[folded];  // outgoing: a corner at `folded`
+  const Index a = p.connectivity.next[corner], b = p.connectivity.prev[corner];
+  const Eigen::Vector2d middle = (p.param.uv[a] + p.param.uv[b]) / 2;
+  p.param.uv[corner] = 2 * middle - p.param.uv[corner];
+  ASSERT_LT(p.charts().signed_area(p.connectivity.face[corner]), 0);
+  layout::LayoutGraph graph;
+  graph.graph.ports = layout::find_ports(p.charts());
+  const nlohmann::ordered_json json = layout::layout_json(graph, layout::QuadLayout{});
+  EXPECT_EQ(json["folded_singularities"], nlohmann::ordered_json::array({folded}));
 }
 
 INSTANTIATE_TEST_SUITE_P(Charts, FlatGridGrowth, ::testing::Values(0u, 1u, 2u, 3u));

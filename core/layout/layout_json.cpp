@@ -10,6 +10,18 @@ nlohmann::ordered_json finite_or_null(double x) {
   return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(nullptr);
 }
 
+// The vertices of the singularities whose ring the parameterization folds (ports.h): a port starts
+// in a flipped triangle, or fewer ports than the valence leave the vertex.
+std::vector<Index> folded_singularities(const Ports& ports) {
+  std::vector<Index> vertices;
+  for (const SingularPoint& point : ports.points) {
+    bool folded = point.cyclic() && point.ports.size() != std::size_t(point.valence);
+    for (Index port : point.ports) folded = folded || ports.ports[port].folded;
+    if (folded) vertices.push_back(point.ring.vertex);
+  }
+  return vertices;
+}
+
 }  // namespace
 
 nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& layout) {
@@ -40,6 +52,7 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   json["length_limit"] = g.length_limit;
   json["length_doublings"] = graph.length_doublings;
   json["unmatchable_ports"] = graph.unmatchable_ports;
+  json["folded_singularities"] = folded_singularities(g.ports);
   json["average_separatrix_length"] = average_separatrix_length(g);
   json["problems"] = layout.check.problems;
   json["problem_count"] = layout.check.problem_count;

@@ -3,7 +3,7 @@
 // conflicts (|I|), patches (|P|), angle_rsd (percent), valid (the project's checker), objective
 // (of P1), seconds (per stage); and alpha, ports, virtual_ports, nodes, arcs, solver,
 // matching_status, lower_bound, curved_edges, twin_edges, loop_conflicts,
-// length_limit, length_doublings, unmatchable_ports,
+// length_limit, length_doublings, unmatchable_ports, folded_singularities (vertices),
 // average_separatrix_length, problems (the first few), problem_count.
 #pragma once
 

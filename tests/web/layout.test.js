@@ -43,6 +43,20 @@ describe('layoutVerdict', () => {
     expect(layoutVerdict(info).text).toBe('invalid: program P1 found no matching (infeasible; 3 ports no matching of G covers)');
   });
 
+  it('says when folded singular rings took ports away', () => {
+    const info = {
+      ...SPHERE,
+      valid: false,
+      objective: null,
+      matching_status: 'infeasible',
+      unmatchable_ports: [2, 8, 11, 14, 16],
+      folded_singularities: [54, 317, 475],
+    };
+    expect(layoutVerdict(info).text).toBe(
+      'invalid: program P1 found no matching (infeasible; 5 ports no matching of G covers; the parameterization folds the rings of 3 singularities, leaving them fewer ports than their valence: a smoother field avoids this)',
+    );
+  });
+
   it('falls back to the number of problems', () => {
     const info = { ...SPHERE, valid: false, patches_not_quads: 0, problem_count: 4 };
     expect(layoutVerdict(info).text).toBe('invalid: 4 problems found by the checker');

@@ -7,14 +7,20 @@ const STAGES = ['separatrices', 'conflicts', 'P1', 'layout', 'check'];
 
 /**
  * The checker's verdict on a layout, in words: { valid, text }. info: the core's layout figures
- * (valid, patches, patches_not_quads, problem_count, matching_status, unmatchable_ports).
+ * (valid, patches, patches_not_quads, problem_count, matching_status, unmatchable_ports,
+ * folded_singularities).
  */
 export function layoutVerdict(info) {
   if (info.valid) return { valid: true, text: `valid: ${count(info.patches)} patches, all quads` };
   const status = info.matching_status;
   if (status !== 'optimal' && status !== 'feasible') {
     const ports = info.unmatchable_ports?.length ?? 0;
-    const detail = ports > 0 ? `; ${count(ports)} ports no matching of G covers` : '';
+    const folded = info.folded_singularities?.length ?? 0;
+    const foldedDetail =
+      ports > 0 && folded > 0
+        ? `; the parameterization folds the rings of ${count(folded)} singularities, leaving them fewer ports than their valence: a smoother field avoids this`
+        : '';
+    const detail = ports > 0 ? `; ${count(ports)} ports no matching of G covers${foldedDetail}` : '';
     return { valid: false, text: `invalid: program P1 found no matching (${status}${detail})` };
   }
   const notQuads = Number(info.patches_not_quads) || 0;
