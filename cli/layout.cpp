@@ -89,13 +89,13 @@ std::string no_matching_text(const nlohmann::ordered_json& json) {
       text += (k ? ", " : "") + items[k].dump();
     return items.size() > 12 ? text + ", ..." : text;
   };
-  std::string result;
   const auto& unmatchable = json["unmatchable_ports"];
-  if (!unmatchable.empty())
-    result += "  G has no perfect matching: no matching covers ports " + list(unmatchable) +
-              " (L_max doubled " + json["length_doublings"].dump() + " times)\n";
+  if (unmatchable.empty()) return {};
+  std::string result = "  G has no perfect matching: no matching covers ports " +
+                       list(unmatchable) + " (L_max doubled " + json["length_doublings"].dump() +
+                       " times)\n";
   const auto& folded = json["folded_singularities"];
-  if (!unmatchable.empty() && !folded.empty())
+  if (!folded.empty())
     result += "  the parameterization folds the rings of " + std::to_string(folded.size()) +
               " singularities (vertices " + list(folded) +
               "): flipped triangles leave them fewer ports than their valence; a smoother field "

@@ -1,8 +1,7 @@
 // The graph of the ports G (thesis Ch. 4, Sec. 6.7-6.8) as a value: the open separatrices grown
-// from every port, the count of the
-// intersection points K met, the edges of G
-// (closed separatrices between two ports, or a port and a virtual port on the boundary, Sec. 4.4),
-// and the conflict pairs I (Sec. 4.6, with the zero-area pairs Z of Remark 4.2).
+// from every port, the count of the intersection points K met, the edges of G (closed separatrices
+// between two ports, or a port and a virtual port on the boundary, Sec. 4.4), and the conflict
+// pairs I (Sec. 4.6, with the zero-area pairs Z of Remark 4.2).
 //
 // An edge keeps its base and height lengths, so that its weight w = L_base + alpha * L_height (4.1)
 // is recomputed for any alpha without tracing again.

@@ -117,11 +117,11 @@ class CliqueCover {
   std::vector<std::uint8_t> member_;  // per edge, during mark_covered()
 };
 
-// Grows a clique from `seed` by the candidate of largest x, then makes it maximal. Nothing as
-// soon as its weight cannot exceed `weight_above` any more (whatever it still gains is among the
-// candidates): most seeds give cliques that are not violated, and making those maximal took most
-// of the separation's time.
-std::optional<Clique> heaviest_clique_from(std::uint32_t seed, const Adjacency& exclusion,
+// The clique grown from `seed` by the candidate of largest x and made maximal, if its weight
+// exceeds `weight_above`. The growth stops as soon as the weight cannot get there any more (what
+// it still gains is among the candidates): most seeds give cliques that are not violated, and
+// making those maximal took most of the separation's time.
+std::optional<Clique> violated_clique_from(std::uint32_t seed, const Adjacency& exclusion,
                                            const std::vector<double>& x, double weight_above) {
   constexpr double kMargin = 1e-9;  // far above the rounding of the sums
   Clique clique = {seed};
@@ -141,6 +141,9 @@ std::optional<Clique> heaviest_clique_from(std::uint32_t seed, const Adjacency& 
     keep_common(candidates, exclusion.of(chosen));
   }
   std::sort(clique.begin(), clique.end());
+  double sorted_weight = 0.0;  // summed in member order, as the rows' activity is
+  for (std::uint32_t e : clique) sorted_weight += x[e];
+  if (!(sorted_weight > weight_above)) return std::nullopt;
   return clique;
 }
 
@@ -163,11 +166,8 @@ std::vector<Clique> violated_cliques(const Adjacency& exclusion, const std::vect
                    [&](std::uint32_t a, std::uint32_t b) { return x[a] > x[b]; });
   std::vector<Clique> found;
   for (std::uint32_t seed : seeds) {
-    std::optional<Clique> clique = heaviest_clique_from(seed, exclusion, x, 1.0 + tolerance);
-    if (!clique) continue;
-    double weight = 0.0;
-    for (std::uint32_t e : *clique) weight += x[e];
-    if (weight > 1.0 + tolerance && std::find(found.begin(), found.end(), *clique) == found.end())
+    std::optional<Clique> clique = violated_clique_from(seed, exclusion, x, 1.0 + tolerance);
+    if (clique && std::find(found.begin(), found.end(), *clique) == found.end())
       found.push_back(std::move(*clique));
   }
   return found;
