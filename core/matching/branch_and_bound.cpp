@@ -14,6 +14,7 @@ using Clock = std::chrono::steady_clock;
 
 constexpr double kIntegral = 1e-6;
 constexpr int kNodeCutRounds = 2;
+constexpr double kPreferredWeight = 2.0;  // branching_edge()
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 struct Fix {
@@ -83,11 +84,13 @@ struct LeastBound {
 class Search {
  public:
   Search(const MatchingProblem& problem, LpRelaxation& lp, const Adjacency& exclusion,
-         const std::vector<Fixed>& root, const IncumbentSearch& heuristics, Incumbent start,
-         double root_bound, const SearchLimits& limits, const Progress& progress)
+         const std::vector<Fixed>& root, const std::vector<std::uint8_t>& preferred,
+         const IncumbentSearch& heuristics, Incumbent start, double root_bound,
+         const SearchLimits& limits, const Progress& progress)
       : problem_(problem),
         lp_(lp),
         exclusion_(exclusion),
+        preferred_(preferred),
         heuristics_(heuristics),
         best_(std::move(start)),
         root_bound_(root_bound),
@@ -166,14 +169,16 @@ class Search {
     }
   }
 
-  // The fractional edge to branch on: the best pseudocost score, the lowest index on ties.
+  // The fractional edge to branch on: the best pseudocost score, counted kPreferredWeight times
+  // for a preferred edge, the lowest index on ties.
   std::int64_t branching_edge() const {
     const std::vector<double>& x = lp_.values();
     std::int64_t best = -1;
     double best_score = -1.0;
     for (std::uint32_t e = 0; e < x.size(); ++e) {
       if (x[e] < kIntegral || x[e] > 1.0 - kIntegral) continue;
-      const double score = pseudocosts_.score(e, x[e]);
+      double score = pseudocosts_.score(e, x[e]);
+      if (!preferred_.empty() && preferred_[e]) score *= kPreferredWeight;
       if (score > best_score) {
         best = e;
         best_score = score;
@@ -246,6 +251,7 @@ class Search {
   const MatchingProblem& problem_;
   LpRelaxation& lp_;
   const Adjacency& exclusion_;
+  const std::vector<std::uint8_t>& preferred_;
   const IncumbentSearch& heuristics_;
   Incumbent best_;
   double root_bound_;
@@ -267,10 +273,11 @@ double bound_tolerance(double incumbent) {
 
 SearchResult branch_and_bound(const MatchingProblem& problem, LpRelaxation& lp,
                               const Adjacency& exclusion, const std::vector<Fixed>& root,
+                              const std::vector<std::uint8_t>& preferred,
                               const IncumbentSearch& heuristics, Incumbent start, double root_bound,
                               const SearchLimits& limits, const Progress& progress) {
-  return Search(problem, lp, exclusion, root, heuristics, std::move(start), root_bound, limits,
-                progress)
+  return Search(problem, lp, exclusion, root, preferred, heuristics, std::move(start), root_bound,
+                limits, progress)
       .run();
 }
 

@@ -171,7 +171,9 @@ void ensure_root(ComponentStructure& part) {
 // Conflict pairs (local edge indices) added to a component with its root.
 void add_pairs(ComponentStructure& part, const std::vector<ConflictPair>& extra) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> both_orders;
+  part.preferred.resize(part.component.problem.edges.size(), 0);
   for (const ConflictPair& c : extra) {
+    part.preferred[c.first] = part.preferred[c.second] = 1;
     part.component.problem.conflicts.push_back(c);
     both_orders.emplace_back(c.first, c.second);
     both_orders.emplace_back(c.second, c.first);
@@ -252,7 +254,7 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
   }
   lp.drop_slack_rows();
   const SearchResult search =
-      branch_and_bound(problem, lp, root.exclusion, root.probing.edges, heuristics,
+      branch_and_bound(problem, lp, root.exclusion, root.probing.edges, part.preferred, heuristics,
                        std::move(start), root_bound, mode.limits, progress);
   return from_search(search, root_bound);
 }

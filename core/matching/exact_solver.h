@@ -46,6 +46,9 @@ struct ComponentStructure {
     std::vector<Clique> cliques;
   };
   std::optional<Root> root;  // made by the first solve whose conflict-free cover has conflicts
+  // Per edge: in a pair added to the cached graph's (ExactSolverCache); the search prefers to
+  // branch on these (branch_and_bound.h). Empty when none was added.
+  std::vector<std::uint8_t> preferred;
 };
 
 // Holds the preprocessing of the first problem solved with it. A problem with the same nodes and
