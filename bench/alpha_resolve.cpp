@@ -1,10 +1,11 @@
 // tessera_alpha_resolve <mesh> [alphas,...]: the page's alpha slider, natively. The graph of the
 // ports is built once (field, parameterization, separatrices, conflicts), then solve_layout() runs
-// at each alpha on it with one ExactSolverCache, as the wasm session does. Prints, per alpha, the
-// whole re-solve and its stages (P1 over all loop rounds, arcs and refinement, check), the rounds,
-// the branch-and-bound nodes and the layout's figures (patches, validity, objective, angle RSD),
-// then the median and the largest re-solve and how many took 100 ms or more. `slider` for the
-// alphas stands for the page's 41 positions, 0 to 20 in steps of 0.5 (web/index.html).
+// at each alpha on it with one ResolveCache, as the wasm session does. Prints, per alpha, the
+// whole re-solve and its stages (P1 over all loop rounds, arcs and refinement, check), the rounds
+// and how many of them reused a matching laid out before, the branch-and-bound nodes and the
+// layout's figures (patches, validity, objective, angle RSD), then the median and the largest
+// re-solve and how many took 100 ms or more. `slider` for the alphas stands for the page's 41
+// positions, 0 to 20 in steps of 0.5 (web/index.html).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -75,9 +76,10 @@ int main(int argc, char** argv) {
     std::printf("%s: |S| %zu, |E_G| %zu, |I| %zu; field to graph %.0f ms\n", argv[1],
                 param.singularities.size(), graph.graph.edges.size(), graph.graph.conflicts.size(),
                 ms_since(start));
-    std::printf("%6s %9s %8s %8s %8s %6s %6s %5s %6s %9s %6s\n", "alpha", "total ms", "P1 ms",
-                "arcs ms", "check ms", "rounds", "nodes", "|P|", "valid", "objective", "RSD %");
-    matching::ExactSolverCache cache;
+    std::printf("%6s %9s %8s %8s %8s %6s %6s %6s %5s %6s %9s %6s\n", "alpha", "total ms", "P1 ms",
+                "arcs ms", "check ms", "rounds", "reused", "nodes", "|P|", "valid", "objective",
+                "RSD %");
+    layout::ResolveCache cache;
     std::vector<double> totals;
     for (double alpha : alphas) {
       start = Clock::now();
@@ -85,11 +87,11 @@ int main(int argc, char** argv) {
           charts, graph, alpha, matching::SolverKind::exact, options.limits, Progress(), &cache);
       const double total = ms_since(start);
       totals.push_back(total);
-      std::printf("%6g %9.1f %8.1f %8.1f %8.1f %6d %6lld %5zu %6s %9.2f %6.2f\n", alpha, total,
+      std::printf("%6g %9.1f %8.1f %8.1f %8.1f %6d %6d %6lld %5zu %6s %9.2f %6.2f\n", alpha, total,
                   stage_ms(layout, "P1"), stage_ms(layout, "layout"), stage_ms(layout, "check"),
-                  layout.rounds, static_cast<long long>(layout.matching.nodes),
-                  layout.check.patch_count, layout.check.valid() ? "yes" : "no",
-                  layout.matching.objective, layout.angle_rsd);
+                  layout.rounds, layout.reused_rounds,
+                  static_cast<long long>(layout.matching.nodes), layout.check.patch_count,
+                  layout.check.valid() ? "yes" : "no", layout.matching.objective, layout.angle_rsd);
     }
     print_summary(totals);
   } catch (const std::exception& e) {

@@ -81,5 +81,38 @@ TEST(LayoutTopology, SameInputSameLayout) {
   EXPECT_EQ(a.layout.refined.mesh.face_attributes, b.layout.refined.mesh.face_attributes);
 }
 
+// The slider's re-solves through one ResolveCache give the layouts of fresh solves; a matching laid
+// out before (the failed first round, the last layout) is not laid out again.
+TEST(LayoutTopology, AResolveCacheGivesTheLayoutsOfFreshSolves) {
+  const test::Parameterized input = test::parameterized(thin_torus());
+  const layout::LayoutOptions options;
+  const layout::LayoutGraph graph = layout::build_layout_graph(input.charts(), options, Progress());
+  const auto solve = [&](double alpha, layout::ResolveCache* cache) {
+    return layout::solve_layout(input.charts(), graph, alpha, matching::SolverKind::exact,
+                                options.limits, Progress(), cache);
+  };
+  layout::ResolveCache cache;
+  std::vector<int> reused;
+  for (double alpha : {5.0, 5.0, 20.0, 5.0, 5.5}) {
+    const layout::QuadLayout fresh = solve(alpha, nullptr);
+    const layout::QuadLayout cached = solve(alpha, &cache);
+    const std::string what = "alpha " + std::to_string(alpha);
+    EXPECT_EQ(fresh.reused_rounds, 0) << what;
+    EXPECT_EQ(cached.matching.edges, fresh.matching.edges) << what;
+    EXPECT_EQ(cached.matching.objective, fresh.matching.objective) << what;
+    EXPECT_EQ(cached.rounds, fresh.rounds) << what;
+    EXPECT_EQ(cached.loop_conflicts, fresh.loop_conflicts) << what;
+    EXPECT_EQ(cached.check.valid(), fresh.check.valid()) << what;
+    EXPECT_EQ(cached.check.patch_count, fresh.check.patch_count) << what;
+    EXPECT_EQ(cached.angle_rsd, fresh.angle_rsd) << what;
+    EXPECT_EQ(cached.refined.mesh.face_attributes, fresh.refined.mesh.face_attributes) << what;
+    reused.push_back(cached.reused_rounds);
+  }
+  ASSERT_GT(cache.failed.size(), 0u);  // the first round's loops around the tube
+  EXPECT_EQ(reused[0], 0);
+  EXPECT_EQ(reused[1], 2);  // both rounds of alpha 5: the failed one and the last layout
+  EXPECT_EQ(reused[3], 1);  // alpha 20's layout was last: only the failed round is known
+}
+
 }  // namespace
 }  // namespace tessera

@@ -115,8 +115,7 @@ val layout_graph(const val& options, const val& on_progress) {
   return guard([&] {
     Session& s = session_with_param();
     s.layout_graph.reset();
-    s.layout.reset();
-    s.p1_cache = {};
+    s.resolve_cache = {};
     layout::LayoutOptions layout_options;
     layout_options.rho = number_option(options, "rho", layout_options.rho);
     if (!(layout_options.rho > 1)) throw InputError("option 'rho' must be a number above 1");
@@ -143,11 +142,10 @@ val layout_solve(double alpha, const val& options, const val& on_progress) {
     const matching::SolverKind solver = matching::solver_kind_from_name(
         solver_name.isUndefined() ? "exact"
                                   : (solver_name.isString() ? solver_name.as<std::string>() : ""));
-    s.layout.reset();
     const layout::Charts charts = charts_of(s);
-    s.layout = layout::solve_layout(charts, *s.layout_graph, alpha, solver, Limits(),
-                                    js_progress(on_progress), &s.p1_cache);
-    const layout::QuadLayout& l = *s.layout;
+    layout::solve_layout(charts, *s.layout_graph, alpha, solver, Limits(), js_progress(on_progress),
+                         &s.resolve_cache);
+    const layout::QuadLayout& l = *s.resolve_cache.last;
     nlohmann::ordered_json info = layout::layout_json(*s.layout_graph, l);
     info["problem_count"] = l.check.problem_count;
     info["patches_not_quads"] = patches_not_quads(l.check);
@@ -175,9 +173,9 @@ val layout_solve(double alpha, const val& options, const val& on_progress) {
 
 const layout::QuadLayout& current_layout() {
   const Session& s = session();
-  if (!s.layout || !s.layout_graph || !s.param)
+  if (!s.resolve_cache.last || !s.layout_graph || !s.param)
     throw InputError("there is no quad layout to export: run the layout first");
-  return *s.layout;
+  return *s.resolve_cache.last;
 }
 
 // The layout as GLB: the refined mesh coloured by patch with _PATCH, arcs, singularities, figures.

@@ -21,12 +21,11 @@ struct Session {
   std::optional<FaceFrames> frames;
   std::optional<CrossField> field;
   std::optional<SeamlessParam> param;
-  // The quad layout: the graph of the ports (alpha-free, kept for re-solving) and the layout of
-  // the last alpha, kept for its export.
+  // The quad layout: the graph of the ports (alpha-free, kept for re-solving), and what its
+  // re-solves keep for the next alpha (layout/quad_layout.h), among it the layout of the last
+  // alpha solved (resolve_cache.last), kept for its export.
   std::optional<layout::LayoutGraph> layout_graph;
-  std::optional<layout::QuadLayout> layout;
-  // P1's weight-free preprocessing of layout_graph, for the next alpha.
-  matching::ExactSolverCache p1_cache;
+  layout::ResolveCache resolve_cache;
 
   void set_mesh(const Mesh& shown) {
     *this = Session();
@@ -37,8 +36,7 @@ struct Session {
   void clear_param() {
     param.reset();
     layout_graph.reset();
-    layout.reset();
-    p1_cache = {};
+    resolve_cache = {};
   }
 };
 

@@ -49,6 +49,8 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   json["curved_edges"] = graph.curved_edges;
   json["twin_edges"] = graph.twin_edges;
   json["loop_conflicts"] = layout.loop_conflicts;
+  json["rounds"] = layout.rounds;
+  json["reused_rounds"] = layout.reused_rounds;
   json["length_limit"] = g.length_limit;
   json["length_doublings"] = graph.length_doublings;
   json["unmatchable_ports"] = graph.unmatchable_ports;

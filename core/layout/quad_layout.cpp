@@ -84,15 +84,20 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
 
 namespace {
 
-// One solve of P1 and the layout it gives (Ch. 5, LAYOUT_NOTES "The layout itself").
-void lay_out(const Charts& charts, const LayoutGraph& graph,
-             const matching::MatchingProblem& problem, double solve_seconds,
-             const Progress& progress, matching::ExactSolverCache* p1_cache, StageClock& clock,
-             QuadLayout& layout) {
-  layout.matching =
-      matching::solve_matching(problem, layout.solver, solve_seconds, progress, p1_cache);
-  ++layout.rounds;
-  clock.stage_done("P1");
+// The layout of the chosen edges (LAYOUT_NOTES "The layout itself"), or the one the cache holds for
+// them.
+void lay_out(const Charts& charts, const LayoutGraph& graph, const ResolveCache& cache,
+             StageClock& clock, QuadLayout& layout) {
+  if (cache.last && cache.last->matching.edges == layout.matching.edges) {
+    layout.arcs = cache.last->arcs;
+    layout.refined = cache.last->refined;
+    layout.check = cache.last->check;
+    layout.angle_rsd = cache.last->angle_rsd;
+    ++layout.reused_rounds;
+    clock.stage_done("layout");
+    clock.stage_done("check");
+    return;
+  }
   layout.arcs.clear();
   for (std::uint32_t e : layout.matching.edges) layout.arcs.push_back(graph.arcs[e]);
   layout.refined = refine_along_arcs(charts, layout.arcs);
@@ -106,24 +111,33 @@ void lay_out(const Charts& charts, const LayoutGraph& graph,
   clock.stage_done("check");
 }
 
+void solve_p1(const matching::MatchingProblem& problem, double solve_seconds,
+              const Progress& progress, ResolveCache& cache, StageClock& clock,
+              QuadLayout& layout) {
+  layout.matching =
+      matching::solve_matching(problem, layout.solver, solve_seconds, progress, &cache.p1);
+  ++layout.rounds;
+  clock.stage_done("P1");
+}
+
 // Rounds of P1 after a failed check (loop_pairs()); all rounds share the solver's time limit.
 constexpr int kMaxLoopRounds = 8;
 
 }  // namespace
 
 // Ch. 5 in rounds: while the check finds patches that are no disks, the chosen pairs that close
-// loops (loop_pairs()) become conflicts and P1 is solved again.
+// loops (loop_pairs()) become conflicts and P1 is solved again. A matching whose layout failed
+// before goes to the next round without being laid out again; only the layout returned is.
 QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
                         matching::SolverKind solver, const Limits& limits, const Progress& progress,
-                        matching::ExactSolverCache* p1_cache) {
+                        ResolveCache* cache) {
+  ResolveCache own_cache;
+  if (!cache) cache = &own_cache;
   QuadLayout layout;
   layout.alpha = alpha;
   layout.solver = solver;
   std::vector<StageSeconds> seconds;
   StageClock clock(seconds);
-  // The loop rounds only add conflict pairs: one cache serves them all.
-  matching::ExactSolverCache own_cache;
-  if (!p1_cache) p1_cache = &own_cache;
   matching::MatchingProblem problem = matching_problem(graph.graph, alpha);
   const Clock::time_point deadline =
       Clock::now() + std::chrono::duration_cast<Clock::duration>(
@@ -131,20 +145,42 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
   const auto seconds_left = [&] {
     return std::chrono::duration<double>(deadline - Clock::now()).count();
   };
-  lay_out(charts, graph, problem, seconds_left(), progress, p1_cache, clock, layout);
-  for (int round = 0; round < kMaxLoopRounds && !layout.check.valid() &&
-                      layout.matching.has_solution() && seconds_left() > 0;
-       ++round) {
-    const std::vector<EdgePair> pairs = loop_pairs(charts, graph.graph, layout.arcs);
+  solve_p1(problem, seconds_left(), progress, *cache, clock, layout);
+  bool laid_out = false, reused = false;
+  for (int round = 0;
+       round < kMaxLoopRounds && layout.matching.has_solution() && seconds_left() > 0; ++round) {
+    std::vector<EdgePair> pairs;
+    if (const auto failed = cache->failed.find(layout.matching.edges);
+        failed != cache->failed.end()) {
+      pairs = failed->second;
+      ++layout.reused_rounds;
+      reused = true;
+    } else {
+      lay_out(charts, graph, *cache, clock, layout);
+      laid_out = true;
+      if (layout.check.valid()) break;
+      pairs = loop_pairs(charts, graph.graph, layout.arcs);
+      cache->failed.emplace(layout.matching.edges, pairs);
+    }
     if (pairs.empty()) break;
     for (const EdgePair& pair : pairs) problem.conflicts.push_back({pair.first, pair.second});
-    QuadLayout next = layout;
-    next.loop_conflicts += pairs.size();
-    lay_out(charts, graph, problem, seconds_left(), progress, p1_cache, clock, next);
+    QuadLayout next;
+    next.alpha = alpha;
+    next.solver = solver;
+    next.rounds = layout.rounds;
+    next.reused_rounds = layout.reused_rounds;
+    next.loop_conflicts = layout.loop_conflicts + pairs.size();
+    solve_p1(problem, seconds_left(), progress, *cache, clock, next);
     if (!next.matching.has_solution()) break;
     layout = std::move(next);
+    laid_out = reused = false;
+  }
+  if (!laid_out) {
+    layout.reused_rounds -= reused;  // laid out after all
+    lay_out(charts, graph, *cache, clock, layout);
   }
   layout.seconds = std::move(seconds);
+  cache->last = layout;
   return layout;
 }
 

@@ -15,6 +15,8 @@
 //      attribute "patch". Throws LimitError (tracing steps or time), CancelledError.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,18 +64,34 @@ struct QuadLayout {
   // Pairs of chosen arcs closing loops (conflicts.h, loop_pairs()) added while the check failed.
   std::size_t loop_conflicts = 0;
   int rounds = 0;  // solves of P1: the first and the loop rounds after it
+  // Rounds whose matching had been laid out before (ResolveCache): no arcs, refinement or check.
+  int reused_rounds = 0;
   std::vector<StageSeconds> seconds;
+};
+
+// What solve_layout() keeps from one alpha to the next of one graph (SPEC "Data flow"); pass the
+// same one for every alpha of a graph and a new one for another graph. The results are the same
+// with it or without it.
+//  - p1: the exact solver's weight-free preprocessing (matching/exact_solver.h);
+//  - what the layout stages found for matchings laid out before. Arcs, refinement and check read
+//    the chosen edges, not alpha, and neighbouring alphas often share an optimum (the weights
+//    are linear in alpha): of the 60 rounds of fertility's 41 slider positions, 0 to 20, 29
+//    chose a matching laid out before, among them the first round of alpha 5.5 to 9 (alpha 5's,
+//    whose patches are no disks) and the one round of alpha 10 to 11 (alpha 9.5's layout).
+struct ResolveCache {
+  matching::ExactSolverCache p1;
+  // Per matching (its edges, increasing) whose layout failed the check: its loop pairs.
+  std::map<std::vector<std::uint32_t>, std::vector<EdgePair>> failed;
+  std::optional<QuadLayout> last;  // the layout solve_layout() returned last
 };
 
 LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& options,
                                const Progress& progress);
 
-// `p1_cache` keeps the exact solver's weight-free preprocessing of the graph from one alpha to the
-// next (matching/exact_solver.h): pass the same one for every alpha of a graph. Without one, the
-// rounds of this call share their own.
+// `cache` may be null: the rounds of this call then share their own.
 QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
                         matching::SolverKind solver, const Limits& limits, const Progress& progress,
-                        matching::ExactSolverCache* p1_cache = nullptr);
+                        ResolveCache* cache = nullptr);
 
 // The mean length of the separatrices as grown (Table 6.1).
 double average_separatrix_length(const PortGraph& graph);

@@ -1,6 +1,7 @@
 // node tests/wasm/layout_timing.mjs <mesh> [alpha...]: times the quad layout of a mesh in the wasm
 // module (each stage, then P1 solved again on the kept graph for each alpha, as the page's slider
-// does) beside the native CLI on the same file. Prints one line per step.
+// does, with the session's ResolveCache) beside the native CLI on the same file. Prints one line per
+// step, then the median and the largest re-solve and how many took 100 ms or more.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -38,10 +39,18 @@ const describe = (info) =>
   `|S| ${info.singularities}, |E_G| ${info.graph_edges}, |I| ${info.conflicts}, |P| ${info.patches}, ` +
   `valid ${info.valid}, P1 ${info.matching_status} ${info.objective}, RSD ${info.angle_rsd.toFixed(2)} %`;
 console.log(`wasm layout: ${describe(first)}`);
+const resolves = [];
 for (const alpha of alphas) {
-  const { result } = timed(`re-solve at alpha ${alpha}`, () => tessera.layoutSolve(alpha, {}, undefined));
-  const s = result.info.seconds;
-  console.log(`     P1 ${(1000 * s.P1).toFixed(1)} ms, arcs+refine ${(1000 * s.layout).toFixed(1)} ms, check ${(1000 * s.check).toFixed(1)} ms; ${describe(result.info)}`);
+  const { result, ms } = timed(`re-solve at alpha ${alpha}`, () => tessera.layoutSolve(alpha, {}, undefined));
+  resolves.push(ms);
+  const { info } = result;
+  const s = info.seconds;
+  console.log(`     P1 ${(1000 * s.P1).toFixed(1)} ms, arcs+refine ${(1000 * s.layout).toFixed(1)} ms, check ${(1000 * s.check).toFixed(1)} ms, rounds ${info.rounds} (${info.reused_rounds} laid out before); ${describe(info)}`);
+}
+if (resolves.length > 0) {
+  const sorted = [...resolves].sort((a, b) => a - b);
+  const slow = sorted.filter((ms) => ms >= 100).length;
+  console.log(`wasm ${sorted.length} re-solves: median ${sorted[Math.floor(sorted.length / 2)].toFixed(1)} ms, largest ${sorted.at(-1).toFixed(1)} ms, ${slow} of ${sorted.length} took 100 ms or more`);
 }
 
 if (fs.existsSync(cli)) {
