@@ -241,10 +241,7 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
 
   const IncumbentSearch heuristics(problem, part.incident, part.conflicts, root.exclusion,
                                    root.probing.edges);
-  Incumbent start = heuristics.dive(order_by_relaxation(lp));
-  Incumbent repaired = heuristics.lagrangian_repair(lp.edge_prices(), kRepairRounds);
-  if (repaired.found && (!start.found || repaired.objective < start.objective))
-    start = std::move(repaired);
+  Incumbent start = heuristics.lagrangian_repair(lp.edge_prices(), kRepairRounds);
   if (mode.search_neighbourhood) {
     Incumbent completed = complete_integral_part(
         problem, part.conflicts, lp.values(), root.probing.edges, {deadline, kNeighbourhoodNodes});
@@ -252,6 +249,7 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
     if (completed.found && (!start.found || completed.objective < start.objective))
       start = std::move(completed);
   }
+  if (!start.found) start = heuristics.dive(order_by_relaxation(lp));
   lp.drop_slack_rows();
   const SearchResult search =
       branch_and_bound(problem, lp, root.exclusion, root.probing.edges, part.preferred, heuristics,
