@@ -42,6 +42,8 @@ std::vector<double> slider_positions() {
   return alphas;
 }
 
+constexpr double kFirstAlpha = 5;  // the page's first layout
+
 void print_summary(std::vector<double> totals) {
   if (totals.empty()) return;
   std::sort(totals.begin(), totals.end());
@@ -55,7 +57,7 @@ void print_summary(std::vector<double> totals) {
 
 int main(int argc, char** argv) {
   if (argc < 2 || std::string(argv[1]) == "--help") {
-    std::printf("usage: tessera_alpha_resolve <mesh> [alphas,... | slider (default 5,20,1,0,5)]\n");
+    std::printf("usage: tessera_alpha_resolve <mesh> [alphas,... (default 5,20,1,0,5) | slider]\n");
     return argc < 2 ? 2 : 0;
   }
   try {
@@ -79,19 +81,36 @@ int main(int argc, char** argv) {
     std::printf("%6s %9s %8s %8s %8s %6s %6s %6s %5s %6s %9s %6s\n", "alpha", "total ms", "P1 ms",
                 "arcs ms", "check ms", "rounds", "reused", "nodes", "|P|", "valid", "objective",
                 "RSD %");
-    layout::ResolveCache cache;
-    std::vector<double> totals;
-    for (double alpha : alphas) {
+    const auto solve = [&](double alpha, layout::ResolveCache& cache) {
       start = Clock::now();
       const layout::QuadLayout layout = layout::solve_layout(
           charts, graph, alpha, matching::SolverKind::exact, options.limits, Progress(), &cache);
       const double total = ms_since(start);
-      totals.push_back(total);
       std::printf("%6g %9.1f %8.1f %8.1f %8.1f %6d %6d %6lld %5zu %6s %9.2f %6.2f\n", alpha, total,
                   stage_ms(layout, "P1"), stage_ms(layout, "layout"), stage_ms(layout, "check"),
                   layout.rounds, layout.reused_rounds,
                   static_cast<long long>(layout.matching.nodes), layout.check.patch_count,
                   layout.check.valid() ? "yes" : "no", layout.matching.objective, layout.angle_rsd);
+      return total;
+    };
+    layout::ResolveCache cache;
+    std::vector<double> totals;
+    if (list != "slider") {
+      for (double alpha : alphas) totals.push_back(solve(alpha, cache));
+      print_summary(totals);
+      return 0;
+    }
+    std::printf("first layout:\n");
+    solve(kFirstAlpha, cache);
+    const layout::ResolveCache after_first = cache;
+    std::printf("stepped from 0 to 20:\n");
+    for (double alpha : alphas) totals.push_back(solve(alpha, cache));
+    print_summary(totals);
+    std::printf("each in one move from the first layout:\n");
+    totals.clear();
+    for (double alpha : alphas) {
+      layout::ResolveCache moved = after_first;
+      totals.push_back(solve(alpha, moved));
     }
     print_summary(totals);
   } catch (const std::exception& e) {
