@@ -114,57 +114,57 @@ class Checker {
     }
   }
 
-  // Per face: the patch whose components() walk has reached it (each patch walks its own faces).
-  std::size_t components(const std::vector<Index>& faces, std::int32_t p) {
-    std::size_t count = 0;
+  // What one walk over the faces of a patch finds: its edge-connected pieces, its vertices and
+  // edges (for the Euler characteristic), and the vertices its boundary halfedges leave.
+  struct PatchWalk {
+    std::size_t pieces = 0;
+    long vertices = 0, edges = 0;
+    std::vector<Index> starts;  // vertices with a boundary halfedge of p leaving them
+  };
+
+  // Depth-first over the faces of p from each face not reached yet; every halfedge of p counts
+  // its vertex once and its edge once (a boundary edge on its p side), and a boundary halfedge is
+  // kept as the one leaving its vertex (where p touches itself there, the last one in face order).
+  PatchWalk walk_patch(const std::vector<Index>& faces, std::int32_t p) {
+    PatchWalk walk;
     for (Index start : faces) {
       if (reached_[start] == p) continue;
-      ++count;
-      std::vector<Index> stack{start};
+      ++walk.pieces;
+      stack_.assign(1, start);
       reached_[start] = p;
-      while (!stack.empty()) {
-        const Index f = stack.back();
-        stack.pop_back();
+      while (!stack_.empty()) {
+        const Index f = stack_.back();
+        stack_.pop_back();
         for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h) {
           const Index t = c_.twin[h];
-          if (c_.is_boundary_halfedge(t) || patch_[c_.face[t]] != p || reached_[c_.face[t]] == p)
+          const Index v = c_.to_vertex[t];
+          walk.vertices += counted_[v] != p;
+          counted_[v] = p;
+          const bool boundary = side_of(t) != p;
+          walk.edges += boundary || h < t;
+          if (boundary) {
+            if (leaving_patch_[v] != p) {
+              walk.starts.push_back(v);
+              leaving_patch_[v] = p;
+              leaving_[v] = h;
+            } else {
+              leaving_[v] = std::max(leaving_[v], h);  // halfedges are numbered in face order
+            }
             continue;
-          reached_[c_.face[t]] = p;
-          stack.push_back(c_.face[t]);
+          }
+          const Index g = c_.face[t];
+          if (reached_[g] == p) continue;
+          reached_[g] = p;
+          stack_.push_back(g);
         }
       }
     }
-    return count;
+    return walk;
   }
 
-  bool on_patch_boundary(Index h, std::int32_t p) const { return side_of(c_.twin[h]) != p; }
-
-  long euler_characteristic(const std::vector<Index>& faces, std::int32_t p) {
-    long vertices = 0, edges = 0;
-    for (Index f : faces) {
-      for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h) {
-        const Index v = c_.from_vertex(h);
-        vertices += counted_[v] != p;
-        counted_[v] = p;
-        edges += on_patch_boundary(h, p) || h < c_.twin[h];
-      }
-    }
-    return vertices - edges + long(faces.size());
-  }
-
-  // The boundary loops of patch p, each as its halfedges in order (counterclockwise around p).
-  // Each loop starts at its least vertex; where p touches itself at a vertex, the walk leaves it
-  // along the boundary halfedge met last.
-  std::vector<std::vector<Index>> boundary_loops(const std::vector<Index>& faces, std::int32_t p) {
-    std::vector<Index> starts;  // vertices with a boundary halfedge of p leaving them
-    for (Index f : faces)
-      for (Index h = mesh_.face_offsets[f]; h < mesh_.face_offsets[f + 1]; ++h) {
-        if (!on_patch_boundary(h, p)) continue;
-        const Index v = c_.from_vertex(h);
-        if (leaving_patch_[v] != p) starts.push_back(v);
-        leaving_patch_[v] = p;
-        leaving_[v] = h;
-      }
+  // The boundary loops of patch p, each as its halfedges in order (counterclockwise around p),
+  // from the vertices walk_patch() found. Each loop starts at its least vertex.
+  std::vector<std::vector<Index>> boundary_loops(std::vector<Index> starts, std::int32_t p) {
     std::sort(starts.begin(), starts.end());
     std::vector<std::vector<Index>> loops;
     for (Index vertex : starts) {
@@ -183,11 +183,11 @@ class Checker {
 
   void check_patch(std::int32_t p, const std::vector<Index>& faces) {
     const std::string name = "patch " + std::to_string(p);
-    const std::size_t pieces = components(faces, p);
-    const long chi = euler_characteristic(faces, p);
-    const std::vector<std::vector<Index>> loops = boundary_loops(faces, p);
-    if (pieces != 1 || chi != 1 || loops.size() != 1) {
-      problem(name + " is not a disk (" + std::to_string(pieces) +
+    PatchWalk walk = walk_patch(faces, p);
+    const long chi = walk.vertices - walk.edges + long(faces.size());
+    const std::vector<std::vector<Index>> loops = boundary_loops(std::move(walk.starts), p);
+    if (walk.pieces != 1 || chi != 1 || loops.size() != 1) {
+      problem(name + " is not a disk (" + std::to_string(walk.pieces) +
               " pieces, Euler characteristic " + std::to_string(chi) + ", " +
               std::to_string(loops.size()) + " boundary loops)");
       return;
@@ -220,11 +220,12 @@ class Checker {
   const std::vector<std::int32_t>& patch_;
   std::vector<bool> is_node_;
   // Scratch of the per-patch walks, marked with the patch id so that no patch clears them.
-  std::vector<std::int32_t> reached_;        // per face (components())
+  std::vector<std::int32_t> reached_;        // per face (walk_patch())
+  std::vector<Index> stack_;                 // faces to visit (walk_patch())
   std::vector<std::int32_t> leaving_patch_;  // per vertex: p if leaving_ holds p's halfedge
-  std::vector<Index> leaving_;               // per vertex (boundary_loops())
+  std::vector<Index> leaving_;               // per vertex (walk_patch(), boundary_loops())
   std::vector<std::int32_t> walked_;         // per halfedge (boundary_loops())
-  std::vector<std::int32_t> counted_;        // per vertex (euler_characteristic())
+  std::vector<std::int32_t> counted_;        // per vertex (walk_patch())
   LayoutCheck result_;
 };
 
