@@ -13,6 +13,4 @@ list(FILTER glpk_dirs EXCLUDE REGEX "\\.[ch]$")
 add_library(glpk_wasm STATIC ${glpk_sources})
 target_include_directories(glpk_wasm PRIVATE ${glpk_src} ${glpk_dirs})
 target_include_directories(glpk_wasm SYSTEM PUBLIC ${glpk_src})
-# -O3 as the rest of the Release build: P1 over fertility's 41 slider positions took 1,404-1,555
-# ms against 1,547-1,614 ms with -O2 (three interleaved runs); -msimd128 on top gained nothing.
-target_compile_options(glpk_wasm PRIVATE -O3 -w)
+target_compile_options(glpk_wasm PRIVATE -O2 -w)
