@@ -82,10 +82,10 @@ int main(int argc, char** argv) {
                 "arcs ms", "check ms", "rounds", "reused", "nodes", "|P|", "valid", "objective",
                 "RSD %");
     const auto solve = [&](double alpha, layout::ResolveCache& cache) {
-      start = Clock::now();
+      const Clock::time_point begin = Clock::now();
       const layout::QuadLayout layout = layout::solve_layout(
           charts, graph, alpha, matching::SolverKind::exact, options.limits, Progress(), &cache);
-      const double total = ms_since(start);
+      const double total = ms_since(begin);
       std::printf("%6g %9.1f %8.1f %8.1f %8.1f %6d %6d %6lld %5zu %6s %9.2f %6.2f\n", alpha, total,
                   stage_ms(layout, "P1"), stage_ms(layout, "layout"), stage_ms(layout, "check"),
                   layout.rounds, layout.reused_rounds,

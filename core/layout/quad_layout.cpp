@@ -146,39 +146,33 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
     return std::chrono::duration<double>(deadline - Clock::now()).count();
   };
   solve_p1(problem, seconds_left(), progress, *cache, clock, layout);
-  bool laid_out = false, reused = false;
+  bool laid_out = false;  // the stages ran for this layout's matching (or gave the cache's last)
   for (int round = 0;
        round < kMaxLoopRounds && layout.matching.has_solution() && seconds_left() > 0; ++round) {
-    std::vector<EdgePair> pairs;
-    if (const auto failed = cache->failed.find(layout.matching.edges);
-        failed != cache->failed.end()) {
-      pairs = failed->second;
-      ++layout.reused_rounds;
-      reused = true;
-    } else {
+    auto failed = cache->failed.find(layout.matching.edges);
+    laid_out = failed == cache->failed.end();
+    if (laid_out) {
       lay_out(charts, graph, *cache, clock, layout);
-      laid_out = true;
       if (layout.check.valid()) break;
-      pairs = loop_pairs(charts, graph.graph, layout.arcs);
-      cache->failed.emplace(layout.matching.edges, pairs);
+      failed =
+          cache->failed.emplace(layout.matching.edges, loop_pairs(charts, graph.graph, layout.arcs))
+              .first;
     }
+    const std::vector<EdgePair>& pairs = failed->second;
     if (pairs.empty()) break;
     for (const EdgePair& pair : pairs) problem.conflicts.push_back({pair.first, pair.second});
     QuadLayout next;
     next.alpha = alpha;
     next.solver = solver;
     next.rounds = layout.rounds;
-    next.reused_rounds = layout.reused_rounds;
+    next.reused_rounds = layout.reused_rounds + (laid_out ? 0 : 1);
     next.loop_conflicts = layout.loop_conflicts + pairs.size();
     solve_p1(problem, seconds_left(), progress, *cache, clock, next);
     if (!next.matching.has_solution()) break;
     layout = std::move(next);
-    laid_out = reused = false;
+    laid_out = false;
   }
-  if (!laid_out) {
-    layout.reused_rounds -= reused;  // laid out after all
-    lay_out(charts, graph, *cache, clock, layout);
-  }
+  if (!laid_out) lay_out(charts, graph, *cache, clock, layout);
   layout.seconds = std::move(seconds);
   cache->last = layout;
   return layout;
