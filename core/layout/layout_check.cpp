@@ -13,6 +13,7 @@ namespace tessera::layout {
 namespace {
 
 constexpr std::size_t kProblemsKept = 12;
+constexpr std::int32_t kNoSide = -2;  // side_of() gives a patch id or -1 (the mesh boundary)
 
 std::string vertex_list(const std::vector<Index>& vertices) {
   std::string text;
@@ -86,11 +87,27 @@ class Checker {
     return total;
   }
 
+  // Per vertex: whether the sides around it differ (two patches, or a patch and the mesh
+  // boundary). Only those can be nodes or touch a patch twice; the others need no walk around.
+  std::vector<bool> vertices_between_sides() const {
+    std::vector<std::int32_t> first_side(mesh_.vertex_count(), kNoSide);
+    std::vector<bool> between(mesh_.vertex_count(), false);
+    for (Index h = 0; h < c_.halfedge_count(); ++h) {
+      const Index v = c_.from_vertex(h);
+      const std::int32_t side = side_of(h);
+      if (first_side[v] == kNoSide) first_side[v] = side;
+      if (first_side[v] != side) between[v] = true;
+    }
+    return between;
+  }
+
   void find_nodes() {
     is_node_.assign(mesh_.vertex_count(), false);
+    const std::vector<bool> between = vertices_between_sides();
     std::vector<Index> outgoing;
     std::vector<std::int32_t> run_sides;  // the side of each run of faces around v
     for (Index v = 0; v < mesh_.vertex_count(); ++v) {
+      if (!between[v]) continue;
       outgoing_halfedges(c_, v, outgoing);
       const std::size_t n = outgoing.size();
       if (n == 0) continue;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
 #include "base/error.h"
 
@@ -18,52 +19,75 @@ std::pair<Index, Index> sorted_pair(Index a, Index b) {
   return {std::min(a, b), std::max(a, b)};
 }
 
-// The points the arcs put on input edges, numbered as refined vertices after the input's.
+// Lists of items grouped by a key in [0, keys), flat: the items of key k are
+// items[offsets[k]] .. items[offsets[k + 1] - 1], in their order in the sorted input.
+template <typename Item>
+struct Grouped {
+  std::vector<Index> offsets;
+  std::vector<Item> items;
+
+  std::span<const Item> of(Index key) const {
+    return {items.data() + offsets[key], items.data() + offsets[key + 1]};
+  }
+};
+
+// Groups sorted (key, item) pairs; `keep(previous, item)` says whether an item following
+// `previous` in its group is kept (to merge near-duplicates).
+template <typename Item, typename Keep>
+Grouped<Item> group_sorted(const std::vector<std::pair<Index, Item>>& keyed, std::size_t keys,
+                           Keep keep) {
+  Grouped<Item> grouped;
+  grouped.offsets.assign(keys + 1, 0);
+  grouped.items.reserve(keyed.size());
+  for (std::size_t k = 0; k < keyed.size(); ++k) {
+    const auto& [key, item] = keyed[k];
+    if (k > 0 && keyed[k - 1].first == key && !keep(grouped.items.back(), item)) continue;
+    grouped.items.push_back(item);
+    ++grouped.offsets[key + 1];
+  }
+  for (std::size_t key = 0; key < keys; ++key) grouped.offsets[key + 1] += grouped.offsets[key];
+  return grouped;
+}
+
+// The points the arcs put on input edges, numbered as refined vertices after the input's: per
+// edge, (parameter, vertex) by increasing parameter.
 class EdgePoints {
  public:
-  EdgePoints(const Connectivity& c, const std::vector<Arc>& arcs) : points_(c.edge_count()) {
-    for (const Arc& arc : arcs) {
-      for (const ArcPiece& piece : arc.pieces) {
+  EdgePoints(const Connectivity& c, const std::vector<Arc>& arcs, Index first) {
+    std::vector<std::pair<Index, std::pair<double, Index>>> keyed;
+    for (const Arc& arc : arcs)
+      for (const ArcPiece& piece : arc.pieces)
         for (const SurfacePoint& p : {piece.from, piece.to})
-          if (p.edge != kNoIndex) points_[p.edge].push_back({p.t, kNoIndex});
-      }
-    }
-  }
-  // Sorts and merges the points of every edge and numbers them from `first` in edge order.
-  void number(Index first) {
-    Index next = first;
-    for (auto& list : points_) {
-      std::sort(list.begin(), list.end());
-      std::vector<std::pair<double, Index>> merged;
-      for (const auto& p : list)
-        if (merged.empty() || p.first - merged.back().first > kSamePoint)
-          merged.push_back({p.first, next++});
-      list = std::move(merged);
-    }
+          if (p.edge != kNoIndex) keyed.push_back({p.edge, {p.t, kNoIndex}});
+    std::sort(keyed.begin(), keyed.end());
+    points_ = group_sorted(keyed, c.edge_count(), [](const auto& previous, const auto& point) {
+      return point.first - previous.first > kSamePoint;
+    });
+    for (auto& point : points_.items) point.second = first++;
   }
   Index vertex_of(const SurfacePoint& p) const {
     if (p.vertex != kNoIndex) return p.vertex;
-    const auto& list = points_[p.edge];
+    const auto list = on(p.edge);
     auto it = std::lower_bound(list.begin(), list.end(), std::pair{p.t - kSamePoint, Index(0)});
     if (it == list.end()) --it;
     return it->second;
   }
-  const std::vector<std::pair<double, Index>>& on(Index edge) const { return points_[edge]; }
+  std::span<const std::pair<double, Index>> on(Index edge) const { return points_.of(edge); }
 
  private:
-  std::vector<std::vector<std::pair<double, Index>>> points_;
+  Grouped<std::pair<double, Index>> points_;
 };
 
 // The arcs' pieces sorted by face: chords between two refined vertices, and the pieces that run
 // along an input edge (both ends input vertices) as refined-vertex chains.
 struct PiecesByFace {
-  std::vector<std::vector<std::pair<Index, Index>>> chords;
+  Grouped<std::pair<Index, Index>> chords;
   std::vector<std::pair<Index, Index>> along_edges;  // input vertex pairs
 };
 
 PiecesByFace sort_pieces(const Mesh& mesh, const std::vector<Arc>& arcs, const EdgePoints& points) {
   PiecesByFace result;
-  result.chords.resize(mesh.face_count());
+  std::vector<std::pair<Index, std::pair<Index, Index>>> keyed;
   for (const Arc& arc : arcs) {
     for (const ArcPiece& piece : arc.pieces) {
       const Index a = points.vertex_of(piece.from), b = points.vertex_of(piece.to);
@@ -71,13 +95,13 @@ PiecesByFace sort_pieces(const Mesh& mesh, const std::vector<Arc>& arcs, const E
       if (piece.from.vertex != kNoIndex && piece.to.vertex != kNoIndex)
         result.along_edges.push_back(sorted_pair(a, b));
       else
-        result.chords[piece.face].push_back(sorted_pair(a, b));
+        keyed.push_back({piece.face, sorted_pair(a, b)});
     }
   }
-  for (auto& list : result.chords) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-  }
+  std::sort(keyed.begin(), keyed.end());
+  result.chords =
+      group_sorted(keyed, mesh.face_count(),
+                   [](const auto& previous, const auto& chord) { return chord != previous; });
   return result;
 }
 
@@ -97,7 +121,7 @@ class FaceArrangement {
     build_cycle(points);
   }
 
-  void cut(const std::vector<std::pair<Index, Index>>& chords) {
+  void cut(std::span<const std::pair<Index, Index>> chords) {
     std::vector<std::array<Index, 2>> local;
     for (const auto& [a, b] : chords) local.push_back({local_node(a), local_node(b)});
     std::vector<std::vector<std::pair<double, Index>>> along(local.size());
@@ -230,16 +254,27 @@ class FaceArrangement {
     adjacent_[b].push_back(a);
   }
 
+  // Each node's neighbours by increasing angle of the direction to them, in (-pi, pi] (the order
+  // of atan2), compared exactly: first the lower half-plane, then by the sign of the cross product
+  // (on the upper half-plane's rim, direction 0 before direction pi), ties by node number.
   void sort_neighbours() {
+    const auto before = [](const Direction& a, const Direction& b) {
+      const bool a_upper = a.d.y() >= 0, b_upper = b.d.y() >= 0;
+      if (a_upper != b_upper) return b_upper;
+      const double turn = cross(a.d, b.d);
+      if (turn != 0) return turn > 0;
+      if ((a.d.x() > 0) != (b.d.x() > 0) && a.d.dot(b.d) < 0) return a.d.x() > 0;
+      return a.node < b.node;
+    };
     for (Index v = 0; v < node_count(); ++v) {
       const Eigen::Vector2d p = planar(v);
       by_angle_.clear();
       for (Index a : adjacent_[v]) {
         const Eigen::Vector2d d = planar(a) - p;
-        by_angle_.emplace_back(std::atan2(d.y(), d.x()), a);
+        by_angle_.push_back({d.isZero(0) ? Eigen::Vector2d(1, 0) : d, a});  // atan2(0, 0) = 0
       }
-      std::sort(by_angle_.begin(), by_angle_.end());
-      for (std::size_t k = 0; k < by_angle_.size(); ++k) adjacent_[v][k] = by_angle_[k].second;
+      std::sort(by_angle_.begin(), by_angle_.end(), before);
+      for (std::size_t k = 0; k < by_angle_.size(); ++k) adjacent_[v][k] = by_angle_[k].node;
     }
   }
 
@@ -310,7 +345,11 @@ class FaceArrangement {
   std::vector<Barycentric> bary_;
   std::vector<Index> vertex_;
   std::vector<std::vector<Index>> adjacent_;  // the first node_count() lists are this face's
-  std::vector<std::pair<double, Index>> by_angle_;
+  struct Direction {
+    Eigen::Vector2d d;  // from the node to its neighbour, in the face's plane
+    Index node;
+  };
+  std::vector<Direction> by_angle_;
   std::vector<std::size_t> slot_start_;  // per node, its first entry in used_
   std::vector<std::uint8_t> used_;       // per node and neighbour: walked
   std::vector<Index> polygon_;
@@ -350,8 +389,7 @@ RefinedMesh refine_along_arcs(const Charts& charts, const std::vector<Arc>& arcs
   const Connectivity& c = charts.connectivity;
   RefinedMesh out;
   out.mesh.positions = mesh.positions;
-  EdgePoints points(c, arcs);
-  points.number(static_cast<Index>(mesh.vertex_count()));
+  const EdgePoints points(c, arcs, static_cast<Index>(mesh.vertex_count()));
   for (Index e = 0; e < c.edge_count(); ++e)
     for (const auto& point : points.on(e))
       out.mesh.positions.push_back(position_of(mesh, c, {kNoIndex, e, point.first}));
@@ -359,14 +397,14 @@ RefinedMesh refine_along_arcs(const Charts& charts, const std::vector<Arc>& arcs
   FaceArrangement arrangement(charts, out);
   for (Index f = 0; f < mesh.face_count(); ++f) {
     const Index first = charts.first_corner(f);
-    bool touched = !pieces.chords[f].empty();
+    bool touched = !pieces.chords.of(f).empty();
     for (Index h = first; h < first + 3 && !touched; ++h) touched = !points.on(c.edge[h]).empty();
     if (!touched) {
       copy_face(charts, f, out);
       continue;
     }
     arrangement.reset(points, f);
-    arrangement.cut(pieces.chords[f]);
+    arrangement.cut(pieces.chords.of(f));
     arrangement.triangulate();
   }
   add_along_edges(charts, pieces.along_edges, points, out);
