@@ -48,7 +48,7 @@ struct ComponentStructure {
     Adjacency exclusion;  // exclusive pairs with the implied exclusions of probing
     std::vector<Clique> cliques;
   };
-  std::optional<Root> root;  // made by the first solve whose conflict-free cover has conflicts
+  std::optional<Root> root;  // made with the cache, or by a solve without one that needs it
   // Per edge: in a pair added to the cached graph's (ExactSolverCache); the search prefers to
   // branch on these (branch_and_bound.h). Empty when none was added.
   std::vector<std::uint8_t> preferred;
