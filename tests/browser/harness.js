@@ -39,7 +39,8 @@ function freePort() {
   });
 }
 
-async function servePage() {
+/** Builds the page and serves it with `vite preview` on a free port: { server, url }. */
+export async function servePage() {
   await build({ root: `${ROOT}web`, configFile: `${ROOT}vite.config.js`, logLevel: 'warn' });
   const port = await freePort();
   const server = await preview({
@@ -48,6 +49,11 @@ async function servePage() {
     logLevel: 'warn',
   });
   return { server, url: `http://127.0.0.1:${port}/` };
+}
+
+/** Debian's Chromium, headless. */
+export function launchBrowser() {
+  return chromium.launch({ executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS });
 }
 
 function withTimeout(promise, ms, what) {
@@ -85,7 +91,7 @@ export async function runTests(filter = '') {
   let passed = 0;
   let failed = 0;
   const { server, url } = await servePage();
-  const browser = await chromium.launch({ executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS });
+  const browser = await launchBrowser();
   try {
     for (const entry of selected) {
       const started = Date.now();

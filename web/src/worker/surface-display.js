@@ -14,7 +14,7 @@ import { vertexNormals } from './display.js';
  */
 export function tiledSurface({ positions, triangles, triangleFace, tile }, color = quarterTubeColor) {
   const normals = vertexNormals(positions, triangles);
-  const { split, source, tileOf } = splitByTile(triangles, triangleFace, tile);
+  const { split, source, tileOf } = splitByTile(positions.length / 3, triangles, triangleFace, tile);
   const colorOf = new Map();
   const out = {
     positions: new Float32Array(3 * source.length),
@@ -22,36 +22,41 @@ export function tiledSurface({ positions, triangles, triangleFace, tile }, color
     colors: new Float32Array(3 * source.length),
     triangles: split,
   };
-  source.forEach((v, w) => {
+  for (let w = 0; w < source.length; w++) {
     if (!colorOf.has(tileOf[w])) colorOf.set(tileOf[w], color(tileOf[w]));
-    out.positions.set(positions.subarray(3 * v, 3 * v + 3), 3 * w);
-    out.normals.set(normals.subarray(3 * v, 3 * v + 3), 3 * w);
-    out.colors.set(colorOf.get(tileOf[w]), 3 * w);
-  });
+    const rgb = colorOf.get(tileOf[w]);
+    for (let k = 0; k < 3; k++) {
+      out.positions[3 * w + k] = positions[3 * source[w] + k];
+      out.normals[3 * w + k] = normals[3 * source[w] + k];
+      out.colors[3 * w + k] = rgb[k];
+    }
+  }
   return out;
 }
 
 // The triangles over one vertex per (vertex, quarter tube) pair: split (3T), and for each new
-// vertex its source vertex and its quarter tube.
-function splitByTile(triangles, triangleFace, tile) {
-  let tiles = 1;
-  for (const t of tile) tiles = Math.max(tiles, t + 1);
-  const index = new Map(); // source vertex * tiles + tile -> new vertex
-  const source = [];
-  const tileOf = [];
+// vertex, numbered in the order the corners first reach it, its source vertex and its quarter
+// tube. The copies of a vertex are a list (first, next), short: a vertex is in few tiles.
+function splitByTile(vertexCount, triangles, triangleFace, tile) {
+  const first = new Int32Array(vertexCount).fill(-1);
+  const next = new Int32Array(triangles.length);
+  const source = new Uint32Array(triangles.length);
+  const tileOf = new Int32Array(triangles.length);
   const split = new Uint32Array(triangles.length);
+  let count = 0;
   for (let corner = 0; corner < triangles.length; corner++) {
     const v = triangles[corner];
     const t = tile[triangleFace[Math.floor(corner / 3)]];
-    const key = v * tiles + t;
-    let w = index.get(key);
-    if (w === undefined) {
-      w = source.length;
-      index.set(key, w);
-      source.push(v);
-      tileOf.push(t);
+    let w = first[v];
+    while (w >= 0 && tileOf[w] !== t) w = next[w];
+    if (w < 0) {
+      w = count++;
+      source[w] = v;
+      tileOf[w] = t;
+      next[w] = first[v];
+      first[v] = w;
     }
     split[corner] = w;
   }
-  return { split, source, tileOf };
+  return { split, source: source.subarray(0, count), tileOf: tileOf.subarray(0, count) };
 }

@@ -82,7 +82,7 @@ const handlers = {
         positions: vertexPoints(positions, result.singularityVertices),
         valences: result.singularityValences,
       },
-      markerRadius: markerRadius(positions, triangles),
+      markerRadius: shown.markerRadius,
     };
   },
 
@@ -109,7 +109,7 @@ const handlers = {
       surface: patchSurface(result.refined, result.patchColors),
       arcs: arcSegments(result.arcs.points, result.arcs.offsets),
       singularities: result.singularities,
-      markerRadius: markerRadius(shown.positions, shown.triangles),
+      markerRadius: shown.markerRadius,
     };
   },
 
@@ -210,6 +210,7 @@ function remember(module, id, mesh) {
     positions: positions.slice(),
     triangles: triangles.slice(),
     normals: normals.slice(),
+    markerRadius: markerRadius(positions, triangles), // of the mesh: one pass over its triangles
     fieldKey: null,
     paramKey: null,
     graphKey: null,

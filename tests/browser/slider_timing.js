@@ -1,0 +1,102 @@
+// node tests/browser/slider_timing.js <mesh> [alpha...]: the alpha slider in the page, timed. Opens
+// the page in Debian's Chromium, picks the mesh file, computes its quad layout (alpha 5), then sets
+// the slider to each alpha in turn (by default the slider's 41 positions, 0 to 20) as a user's
+// release of it would. Prints per position the re-solve time the page shows (the worker's, from
+// alpha to the checked layout) and, measured in the page from the release, the time until the
+// figures showed the new layout (the re-solve, its display data, the messages) and until the frame
+// after it was drawn (headless Chromium draws with its software renderer: slow on large meshes).
+// Ends with the median and the largest of each and how many took 100 ms or more.
+// A development tool, not part of `npm test`.
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { launchBrowser, servePage } from './harness.js';
+import { idle, pickFiles } from './helpers.js';
+
+const [file, ...alphaArgs] = process.argv.slice(2);
+if (!file) {
+  console.error('usage: node tests/browser/slider_timing.js <mesh> [alpha...]');
+  process.exit(2);
+}
+const SLIDER = Array.from({ length: 41 }, (_, k) => k / 2);
+const alphas = alphaArgs.length > 0 ? alphaArgs.map(Number) : SLIDER;
+const LAYOUT_TIMEOUT_MS = 600_000;
+
+const figure = (page, key) => page.locator(`[data-role=layout-figures] [data-figure=${key}]`).textContent();
+
+/** Milliseconds from the page's "12 ms" / "1.2 s". */
+function milliseconds(text) {
+  const match = /^([\d.]+) (m?s)$/.exec(text.trim());
+  if (!match) throw new Error(`not a time: "${text}"`);
+  return Number(match[1]) * (match[2] === 'ms' ? 1 : 1000);
+}
+
+async function shownAlpha(page, alpha) {
+  await page
+    .locator('[data-role=layout-figures] [data-figure=alpha]')
+    .filter({ hasText: new RegExp(`^${alpha}$`) })
+    .waitFor({ timeout: LAYOUT_TIMEOUT_MS });
+  await idle(page);
+}
+
+// In the page: the slider set to `alpha` and released (its input and change events). Resolves
+// with the milliseconds until the figures showed that alpha (the re-solve, the display data, the
+// messages) and until the frame after it was drawn.
+function releaseSliderAt(alpha) {
+  const slider = document.querySelector('[data-role=alpha]');
+  const figures = document.querySelector('[data-role=layout-figures]');
+  const shows = () => figures.querySelector('[data-figure=alpha]')?.textContent === alpha;
+  return new Promise((resolve) => {
+    const start = performance.now();
+    const observer = new MutationObserver(() => {
+      if (!shows()) return;
+      observer.disconnect();
+      const shown = performance.now() - start;
+      requestAnimationFrame(() => requestAnimationFrame(() => resolve({ shown, drawn: performance.now() - start })));
+    });
+    observer.observe(figures, { childList: true, subtree: true, characterData: true });
+    slider.value = alpha;
+    slider.dispatchEvent(new Event('input', { bubbles: true }));
+    slider.dispatchEvent(new Event('change', { bubbles: true }));
+  });
+}
+
+function summary(label, times) {
+  const sorted = [...times].sort((a, b) => a - b);
+  const slow = sorted.filter((t) => t >= 100).length;
+  return `${label}: median ${sorted[sorted.length >> 1].toFixed(0)} ms, largest ${sorted.at(-1).toFixed(0)} ms, ${slow} of ${sorted.length} at 100 ms or more`;
+}
+
+const { server, url } = await servePage();
+const browser = await launchBrowser();
+try {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  page.on('console', (m) => { if (m.text().startsWith('TIMING')) console.log('   ', m.text()); });
+  await page.goto(url);
+  await idle(page);
+  await pickFiles(page, [{ name: path.basename(file), bytes: readFileSync(file) }]);
+  await page.locator('[data-role=mesh-name]').filter({ hasText: path.basename(file) }).waitFor();
+  await idle(page);
+  const started = Date.now();
+  await page.getByRole('button', { name: 'Compute quad layout' }).click();
+  await shownAlpha(page, 5);
+  console.log(`${path.basename(file)}: layout at alpha 5 in ${Date.now() - started} ms, ${await figure(page, 'patches')} patches`);
+  console.log(' alpha  re-solve ms  shown after ms  drawn after ms  patches');
+  const worker = [];
+  const shown = [];
+  const drawn = [];
+  for (const alpha of alphas) {
+    const times = await page.evaluate(releaseSliderAt, String(alpha));
+    await shownAlpha(page, alpha);
+    worker.push(milliseconds(await figure(page, 'solve_seconds')));
+    shown.push(times.shown);
+    drawn.push(times.drawn);
+    const columns = [worker, shown, drawn].map((list, k) => list.at(-1).toFixed(0).padStart([12, 15, 15][k]));
+    console.log(`${String(alpha).padStart(6)} ${columns.join(' ')} ${(await figure(page, 'patches')).padStart(8)}`);
+  }
+  console.log(summary('re-solve (worker)', worker));
+  console.log(summary('shown after (page)', shown));
+  console.log(summary('drawn after (page)', drawn));
+} finally {
+  await browser.close();
+  await new Promise((resolve) => server.httpServer.close(resolve));
+}
