@@ -117,6 +117,22 @@ describe('tiledSurface', () => {
     for (const i of [4, 5, 6, 7]) expect(vertex(surface.colors, i)).toEqual(b);
   });
 
+  it('gives each corner a copy of its own vertex, also for faces in no tile (-1)', () => {
+    // Vertex 1 in tile -1 and vertex 0 in tile 1 (the last): v * tiles + tile would be one key.
+    const apart = {
+      positions: new Float32Array([0, 0, 0, 5, 5, 5, 1, 0, 0, 0, 1, 0, 6, 5, 5, 5, 6, 5]),
+      triangles: new Uint32Array([0, 2, 3, 1, 4, 5]),
+      triangleFace: new Uint32Array([0, 1]),
+      tile: new Int32Array([1, -1]),
+    };
+    const surface = tiledSurface(apart, () => [0.5, 0.5, 0.5]);
+    expect(surface.positions).toHaveLength(3 * 6);
+    apart.triangles.forEach((v, corner) => {
+      const w = surface.triangles[corner];
+      expect([...surface.positions.subarray(3 * w, 3 * w + 3)]).toEqual([...apart.positions.subarray(3 * v, 3 * v + 3)]);
+    });
+  });
+
   it("keeps the whole surface's vertex normals on every copy, so the shading stays smooth", () => {
     const bent = { ...strip, positions: strip.positions.map((x, i) => (i % 3 === 2 && i >= 6 && i < 9 ? 0.5 : x)) };
     const surface = tiledSurface(bent);
