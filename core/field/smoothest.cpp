@@ -1,6 +1,7 @@
 #include "field/smoothest.h"
 
 #include <cmath>
+#include <complex>
 #include <random>
 
 #include <Eigen/Dense>
@@ -59,6 +60,28 @@ Eigen::VectorXd most_uniform(const Dense& basis, const Eigen::VectorXd& mass,
   return basis * c;
 }
 
+// The smoothest field is defined up to a global rotation: with z every e^{i phi} z is an
+// eigenvector of the same eigenvalue (the connection Laplacian is complex-linear), and which one
+// the eigensolvers return is decided by rounding (the native and wasm builds returned z and -z for
+// the icosphere: the same crosses turned by 45 degrees, another layout). The phase is fixed here:
+// sum_k (k + 1) M_k z_k over the component's faces in their order is made real and positive (the
+// face numbers break the surface's symmetries, so the sum does not vanish by symmetry).
+Eigen::VectorXd with_fixed_phase(Eigen::VectorXd v, const Eigen::VectorXd& mass,
+                                 const std::vector<Index>& rows) {
+  std::complex<double> sum = 0;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    sum += static_cast<double>(k + 1) * mass[rows[k]] *
+           std::complex<double>(v[rows[k]], v[rows[k] + 1]);
+  if (std::abs(sum) == 0) return v;
+  const std::complex<double> turn = std::conj(sum) / std::abs(sum);
+  for (Index r : rows) {
+    const std::complex<double> z = turn * std::complex<double>(v[r], v[r + 1]);
+    v[r] = z.real();
+    v[r + 1] = z.imag();
+  }
+  return v;
+}
+
 Eigen::VectorXd smoothest_on_component(
     const Eigen::SparseMatrix<double>& a,
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& solver, const Eigen::VectorXd& mass,
@@ -89,8 +112,8 @@ Eigen::VectorXd smoothest_on_component(
          ritz.values[degenerate] <= ritz.values[0] * (1 + kDegenerate) + 1e-300)
     ++degenerate;
   // One complex eigenvalue (z and i z): every combination is the same field turned.
-  if (degenerate <= 2) return ritz.vectors.col(0);
-  return most_uniform(ritz.vectors.leftCols(degenerate), mass, rows);
+  if (degenerate <= 2) return with_fixed_phase(ritz.vectors.col(0), mass, rows);
+  return with_fixed_phase(most_uniform(ritz.vectors.leftCols(degenerate), mass, rows), mass, rows);
 }
 
 }  // namespace

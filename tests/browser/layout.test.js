@@ -5,14 +5,15 @@ import { readFileSync } from 'node:fs';
 import { RESULTS, test } from './harness.js';
 import { idle, message, openPage, pixelShares } from './helpers.js';
 
-// Saturated pixels by hue sextant: the patches' colours spread over the hues (golden-ratio steps),
-// the beige surface, the dark background and the grey arcs are not saturated enough to count.
+// Saturated pixels by hue sextant: the patches' colours spread over the hues (golden-ratio steps;
+// lit, the palest reach a max - min of 50 to 60), the dark background and the grey arcs are not
+// saturated enough to count, and the beige surface (#d9c3a0, 57 unlit) at most one sextant.
 const HUES = Object.fromEntries(
   [0, 1, 2, 3, 4, 5].map((k) => [
     `hue${k}`,
     `(r, g, b) => {
       const max = Math.max(r, g, b), min = Math.min(r, g, b);
-      if (max - min < 80) return false;
+      if (max - min < 50) return false;
       const d = max - min;
       const h = max === r ? ((g - b) / d + 6) % 6 : max === g ? (b - r) / d + 2 : (r - g) / d + 4;
       return Math.floor(h) === ${k};
