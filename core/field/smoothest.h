@@ -11,7 +11,9 @@
 //
 // In:  the factorized matrix A = L + shift M (SPD) and A itself, the diagonal of M per row, the
 //      first rows of the faces of each component (two rows per face: real and imaginary part).
-// Out: per component a vector of unit mass norm on its rows, zero elsewhere; deterministic.
+// Out: per component a vector of unit mass norm on its rows, zero elsewhere, turned so that
+//      sum_k (k + 1) M_k z_k over its faces is real and positive (every rotation of the field is
+//      as smooth: the rule, not rounding, picks one); deterministic.
 // Throws CancelledError when cancelled.
 #pragma once
 
