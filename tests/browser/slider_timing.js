@@ -40,11 +40,13 @@ async function shownAlpha(page, alpha) {
 
 // In the page: the slider set to `alpha` and released (its input and change events). Resolves
 // with the milliseconds until the figures showed that alpha (the re-solve, the display data, the
-// messages) and until the frame after it was drawn.
+// messages) and until the frame after it was drawn; null when that alpha is already shown (no
+// re-solve).
 function releaseSliderAt(alpha) {
   const slider = document.querySelector('[data-role=alpha]');
   const figures = document.querySelector('[data-role=layout-figures]');
   const shows = () => figures.querySelector('[data-figure=alpha]')?.textContent === alpha;
+  if (shows()) return null;
   return new Promise((resolve) => {
     const start = performance.now();
     const observer = new MutationObserver(() => {
@@ -70,7 +72,6 @@ const { server, url } = await servePage();
 const browser = await launchBrowser();
 try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-  page.on('console', (m) => { if (m.text().startsWith('TIMING')) console.log('   ', m.text()); });
   await page.goto(url);
   await idle(page);
   await pickFiles(page, [{ name: path.basename(file), bytes: readFileSync(file) }]);
@@ -86,6 +87,10 @@ try {
   const drawn = [];
   for (const alpha of alphas) {
     const times = await page.evaluate(releaseSliderAt, String(alpha));
+    if (!times) {
+      console.log(`${String(alpha).padStart(6)}  already shown, skipped`);
+      continue;
+    }
     await shownAlpha(page, alpha);
     worker.push(milliseconds(await figure(page, 'solve_seconds')));
     shown.push(times.shown);
