@@ -112,8 +112,10 @@ Eigen::VectorXd smoothest_on_component(
          ritz.values[degenerate] <= ritz.values[0] * (1 + kDegenerate) + 1e-300)
     ++degenerate;
   // One complex eigenvalue (z and i z): every combination is the same field turned.
-  if (degenerate <= 2) return with_fixed_phase(ritz.vectors.col(0), mass, rows);
-  return with_fixed_phase(most_uniform(ritz.vectors.leftCols(degenerate), mass, rows), mass, rows);
+  const Eigen::VectorXd field = degenerate <= 2
+                                    ? Eigen::VectorXd(ritz.vectors.col(0))
+                                    : most_uniform(ritz.vectors.leftCols(degenerate), mass, rows);
+  return with_fixed_phase(field, mass, rows);
 }
 
 }  // namespace

@@ -82,7 +82,7 @@ const handlers = {
         positions: vertexPoints(positions, result.singularityVertices),
         valences: result.singularityValences,
       },
-      markerRadius: shown.markerRadius,
+      markerRadius: sessionMarkerRadius(shown),
     };
   },
 
@@ -109,7 +109,7 @@ const handlers = {
       surface: patchSurface(result.refined, result.patchColors),
       arcs: arcSegments(result.arcs.points, result.arcs.offsets),
       singularities: result.singularities,
-      markerRadius: shown.markerRadius,
+      markerRadius: sessionMarkerRadius(shown),
     };
   },
 
@@ -210,7 +210,7 @@ function remember(module, id, mesh) {
     positions: positions.slice(),
     triangles: triangles.slice(),
     normals: normals.slice(),
-    markerRadius: markerRadius(positions, triangles), // of the mesh: one pass over its triangles
+    markerRadius: null, // sessionMarkerRadius()
     fieldKey: null,
     paramKey: null,
     graphKey: null,
@@ -218,6 +218,13 @@ function remember(module, id, mesh) {
     layoutKey: null,
   };
   return mesh;
+}
+
+// The size of the singularity markers on the session's mesh: a pass over its triangles, made the
+// first time a view needs it and kept (it was made at every re-solve).
+function sessionMarkerRadius(shown) {
+  shown.markerRadius ??= markerRadius(shown.positions, shown.triangles);
+  return shown.markerRadius;
 }
 
 // The session of the page's mesh { id, sample | file }: the current one, or, in a fresh worker or
