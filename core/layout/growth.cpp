@@ -16,6 +16,12 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kLengthTolerance = 1e-7;
 // Two intersections of the same two lines closer than this (in both lengths) are one.
 constexpr double kSameCrossing = 1e-6;
+// Events within one tick of parametric length happen at once (growth.h, Event).
+constexpr double kEventTick = 1e-6;
+
+std::int64_t tick_of(double time) {
+  return static_cast<std::int64_t>(std::floor(time / kEventTick));
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -128,7 +134,8 @@ SeparatrixGrowth::NearSingularity SeparatrixGrowth::near_singularity(const LineC
 
 void SeparatrixGrowth::queue_end(const PendingEnd& end, double time) {
   pending_ends_.push_back(end);
-  events_.push({time, 0, static_cast<Index>(pending_ends_.size() - 1)});
+  events_.push(
+      {tick_of(time), 0, end.line, 0, 0, static_cast<Index>(pending_ends_.size() - 1), {}});
 }
 
 void SeparatrixGrowth::advance(Index line, double length_limit) {
@@ -219,7 +226,8 @@ void SeparatrixGrowth::discover(const SeparatrixPiece& a, const SeparatrixPiece&
   m.direction_a = first.direction;
   m.direction_b = second.direction;
   if (!is_new(m)) return;
-  events_.push({m.time(), 1, crossings_found_++, m});
+  events_.push(
+      {tick_of(m.time()), 1, m.line_a, m.line_b, tick_of(m.length_a), crossings_found_++, m});
 }
 
 bool SeparatrixGrowth::is_new(const Crossing& m) {
@@ -232,7 +240,11 @@ bool SeparatrixGrowth::is_new(const Crossing& m) {
 }
 
 void SeparatrixGrowth::handle_events_until(double time) {
-  while (!events_.empty() && events_.top().time <= time) {
+  // Only ticks every line has grown past: an event found later lands in a later tick or in this
+  // one, still unhandled, whatever the order the lines grew in.
+  const bool all = time == kInfinity;
+  const std::int64_t now = all ? 0 : tick_of(time);
+  while (!events_.empty() && (all || events_.top().tick < now)) {
     const Event event = events_.top();
     events_.pop();
     handle(event);

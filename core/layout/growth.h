@@ -51,14 +51,22 @@ class SeparatrixGrowth {
 
  private:
   // A crossing waits in its event, so that only the pending ones are held (a dragon grows more
-  // than 8 million).
+  // than 8 million). Events are handled by tick (their time in steps of kEventTick), then by kind,
+  // lines and where on the first line, so that the order of events at one time, which the spiral
+  // test's stops depend on, follows the lines, not rounding or the order the lines grew in: on a
+  // symmetric surface, mirror lines meet their crossings at times that differ by rounding only, and
+  // a pair can cross twice at once (the double torus sample: which of two mirror lines the test
+  // stopped went with 1e-9 radians of the field, and native and wasm built different graphs).
   struct Event {
-    double time = 0;
-    int kind = 0;     // 0: a separatrix end, 1: a crossing
+    std::int64_t tick = 0;
+    int kind = 0;                 // 0: a separatrix end, 1: a crossing
+    Index first = 0, second = 0;  // kind 0: the line; kind 1: the crossing's lines
+    std::int64_t tick_a = 0;      // kind 1: length_a in ticks (two crossings of a pair at once)
     Index index = 0;  // kind 0: into pending_ends_; kind 1: the crossing's number, in order found
     Crossing crossing;
     bool operator>(const Event& o) const {
-      return std::tie(time, kind, index) > std::tie(o.time, o.kind, o.index);
+      return std::tie(tick, kind, first, second, tick_a, index) >
+             std::tie(o.tick, o.kind, o.first, o.second, o.tick_a, o.index);
     }
   };
   struct PendingEnd {
