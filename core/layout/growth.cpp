@@ -19,8 +19,9 @@ constexpr double kSameCrossing = 1e-6;
 // Events within one tick of parametric length happen at once (growth.h, Event).
 constexpr double kEventTick = 1e-6;
 
+// Saturates: absurd lengths stay in range.
 std::int64_t tick_of(double time) {
-  return static_cast<std::int64_t>(std::floor(time / kEventTick));
+  return static_cast<std::int64_t>(std::floor(std::min(time / kEventTick, 9e18)));
 }
 
 using Clock = std::chrono::steady_clock;
@@ -242,9 +243,9 @@ bool SeparatrixGrowth::is_new(const Crossing& m) {
 void SeparatrixGrowth::handle_events_until(double time) {
   // Only ticks every line has grown past: an event found later lands in a later tick or in this
   // one, still unhandled, whatever the order the lines grew in.
-  const bool all = time == kInfinity;
-  const std::int64_t now = all ? 0 : tick_of(time);
-  while (!events_.empty() && (all || events_.top().tick < now)) {
+  const std::int64_t now =
+      time == kInfinity ? std::numeric_limits<std::int64_t>::max() : tick_of(time);
+  while (!events_.empty() && events_.top().tick < now) {
     const Event event = events_.top();
     events_.pop();
     handle(event);
