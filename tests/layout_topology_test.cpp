@@ -115,5 +115,44 @@ TEST(LayoutTopology, AResolveCacheGivesTheLayoutsOfFreshSolves) {
   EXPECT_EQ(reused[3], 1);  // alpha 1's layout was last: only the failed round is known
 }
 
+// The page's worker presolves the slider's alphas when idle: a solve at a presolved alpha runs no
+// round of P1 and gives the layout of a fresh solve; presolving keeps the last layout returned.
+TEST(LayoutTopology, APresolvedAlphaIsLaidOutWithoutSolving) {
+  const test::Parameterized input = test::parameterized(thin_torus());
+  const layout::LayoutOptions options;
+  const layout::LayoutGraph graph = layout::build_layout_graph(input.charts(), options, Progress());
+  const auto solve = [&](double alpha, layout::ResolveCache* cache) {
+    return layout::solve_layout(input.charts(), graph, alpha, matching::SolverKind::exact,
+                                options.limits, Progress(), cache);
+  };
+  layout::ResolveCache cache;
+  const layout::QuadLayout first = solve(5.0, &cache);
+  for (double alpha : {1.0, 0.0, 20.0})
+    EXPECT_TRUE(layout::presolve_layout(input.charts(), graph, alpha, matching::SolverKind::exact,
+                                        options.limits, Progress(), cache));
+  ASSERT_TRUE(cache.last);
+  EXPECT_EQ(cache.last->alpha, 5.0);
+  EXPECT_EQ(cache.last->matching.edges, first.matching.edges);
+  EXPECT_FALSE(cache.solved.contains({matching::SolverKind::glpk, 1.0}));
+  int most_rounds = 0;
+  for (double alpha : {1.0, 0.0, 20.0, 5.0}) {
+    const layout::QuadLayout fresh = solve(alpha, nullptr);
+    const layout::QuadLayout presolved = solve(alpha, &cache);
+    const std::string what = "alpha " + std::to_string(alpha);
+    EXPECT_FALSE(fresh.solved_before) << what;
+    EXPECT_TRUE(presolved.solved_before) << what;
+    EXPECT_EQ(presolved.matching.edges, fresh.matching.edges) << what;
+    EXPECT_EQ(presolved.matching.objective, fresh.matching.objective) << what;
+    EXPECT_EQ(presolved.rounds, fresh.rounds) << what;
+    EXPECT_GE(presolved.reused_rounds, fresh.rounds - 1) << what;  // the failed rounds
+    most_rounds = std::max(most_rounds, fresh.rounds);
+    EXPECT_EQ(presolved.loop_conflicts, fresh.loop_conflicts) << what;
+    EXPECT_EQ(presolved.check.valid(), fresh.check.valid()) << what;
+    EXPECT_EQ(presolved.angle_rsd, fresh.angle_rsd) << what;
+    EXPECT_EQ(presolved.refined.mesh.face_attributes, fresh.refined.mesh.face_attributes) << what;
+  }
+  EXPECT_EQ(most_rounds, 2);  // alpha 5's loop round: a presolve that solves in rounds
+}
+
 }  // namespace
 }  // namespace tessera

@@ -110,6 +110,15 @@ std::size_t patches_not_quads(const layout::LayoutCheck& check) {
   return count;
 }
 
+// options: { solver: 'exact'|'glpk'|'glpk-tuned' } (default exact).
+matching::SolverKind solver_of(const val& options) {
+  const val solver_name =
+      options.isUndefined() || options.isNull() ? val::undefined() : options["solver"];
+  return matching::solver_kind_from_name(
+      solver_name.isUndefined() ? "exact"
+                                : (solver_name.isString() ? solver_name.as<std::string>() : ""));
+}
+
 // options: { rho } -> the graph's figures (graph_json). Drops the layout of the graph before.
 val layout_graph(const val& options, const val& on_progress) {
   return guard([&] {
@@ -128,8 +137,7 @@ val layout_graph(const val& options, const val& on_progress) {
   });
 }
 
-// P1 at `alpha` on the kept graph, and the layout. options: { solver: 'exact'|'glpk'|'glpk-tuned'
-// }.
+// P1 at `alpha` on the kept graph, and the layout. options: solver_of()'s.
 // -> { info: layout_json + problem_count, patches_not_quads; refined: { positions, triangles,
 //      triangleFace, patch: Int32Array per triangle }, patchColors: Float32Array (3 per patch, the
 //      GLB's colours), arcs: arc_polylines, singularities: singularities_of }
@@ -137,14 +145,9 @@ val layout_solve(double alpha, const val& options, const val& on_progress) {
   return guard([&] {
     Session& s = session_with_graph();
     if (!(alpha >= 0)) throw InputError("alpha must be a number >= 0");
-    const val solver_name =
-        options.isUndefined() || options.isNull() ? val::undefined() : options["solver"];
-    const matching::SolverKind solver = matching::solver_kind_from_name(
-        solver_name.isUndefined() ? "exact"
-                                  : (solver_name.isString() ? solver_name.as<std::string>() : ""));
     const layout::Charts charts = charts_of(s);
-    layout::solve_layout(charts, *s.layout_graph, alpha, solver, Limits(), js_progress(on_progress),
-                         &s.resolve_cache);
+    layout::solve_layout(charts, *s.layout_graph, alpha, solver_of(options), Limits(),
+                         js_progress(on_progress), &s.resolve_cache);
     const layout::QuadLayout& l = *s.resolve_cache.last;
     nlohmann::ordered_json info = layout::layout_json(*s.layout_graph, l);
     info["problem_count"] = l.check.problem_count;
@@ -168,6 +171,23 @@ val layout_solve(double alpha, const val& options, const val& on_progress) {
     result.set("arcs", arc_polylines(charts, l.arcs));
     result.set("singularities", singularities_of(*s.mesh, s.layout_graph->graph));
     return result;
+  });
+}
+
+// P1 at `alpha` on the kept graph into the session's ResolveCache (layout::presolve_layout()),
+// for a layoutSolve() there later; the layout shown and exported stays. options: layoutSolve's and
+// maxSeconds, the solves' time limit (at most the page's).
+// -> whether the alpha is solved (false: no proven optimum within the limits).
+val layout_presolve(double alpha, const val& options) {
+  return guard([&] {
+    Session& s = session_with_graph();
+    if (!(alpha >= 0)) throw InputError("alpha must be a number >= 0");
+    Limits limits;
+    const double seconds = number_option(options, "maxSeconds", limits.max_solve_seconds);
+    if (!(seconds > 0)) throw InputError("option 'maxSeconds' must be a number above 0");
+    limits.max_solve_seconds = std::min(seconds, limits.max_solve_seconds);
+    return val(layout::presolve_layout(charts_of(s), *s.layout_graph, alpha, solver_of(options),
+                                       limits, Progress(), s.resolve_cache));
   });
 }
 
@@ -197,6 +217,7 @@ val layout_ply() {
 EMSCRIPTEN_BINDINGS(tessera_layout) {
   emscripten::function("layoutGraph", &layout_graph);
   emscripten::function("layoutSolve", &layout_solve);
+  emscripten::function("layoutPresolve", &layout_presolve);
   emscripten::function("layoutGlb", &layout_glb);
   emscripten::function("layoutPly", &layout_ply);
 }

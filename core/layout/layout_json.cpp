@@ -51,6 +51,7 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   json["loop_conflicts"] = layout.loop_conflicts;
   json["rounds"] = layout.rounds;
   json["reused_rounds"] = layout.reused_rounds;
+  json["solved_before"] = layout.solved_before;
   json["length_limit"] = g.length_limit;
   json["length_doublings"] = graph.length_doublings;
   json["unmatchable_ports"] = graph.unmatchable_ports;

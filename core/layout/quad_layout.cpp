@@ -123,21 +123,31 @@ void solve_p1(const matching::MatchingProblem& problem, double solve_seconds,
 // Rounds of P1 after a failed check (loop_pairs()); all rounds share the solver's time limit.
 constexpr int kMaxLoopRounds = 8;
 
-}  // namespace
-
 // Ch. 5 in rounds: while the check finds patches that are no disks, the chosen pairs that close
 // loops (loop_pairs()) become conflicts and P1 is solved again. A matching whose layout failed
-// before goes to the next round without being laid out again; only the layout returned is.
-QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
-                        matching::SolverKind solver, const Limits& limits, const Progress& progress,
-                        ResolveCache* cache) {
-  ResolveCache own_cache;
-  if (!cache) cache = &own_cache;
+// before goes to the next round without being laid out again. An alpha solved before
+// (cache.solved) runs no round: its matching is laid out. The layout returned is laid out unless
+// `lay_out_result` is false (presolve_layout(), which keeps only the matching).
+QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, double alpha,
+                           matching::SolverKind solver, const Limits& limits,
+                           const Progress& progress, ResolveCache& cache, bool lay_out_result) {
   QuadLayout layout;
   layout.alpha = alpha;
   layout.solver = solver;
   std::vector<StageSeconds> seconds;
   StageClock clock(seconds);
+  const std::pair<matching::SolverKind, double> key{solver, alpha};
+  if (const auto known = cache.solved.find(key); known != cache.solved.end()) {
+    layout.matching = known->second.matching;
+    layout.rounds = known->second.rounds;
+    layout.loop_conflicts = known->second.loop_conflicts;
+    layout.reused_rounds = layout.rounds - 1;  // the failed rounds are in cache.failed
+    layout.solved_before = true;
+    clock.stage_done("P1");
+    if (lay_out_result) lay_out(charts, graph, cache, clock, layout);
+    layout.seconds = std::move(seconds);
+    return layout;
+  }
   matching::MatchingProblem problem = matching_problem(graph.graph, alpha);
   const Clock::time_point deadline =
       Clock::now() + std::chrono::duration_cast<Clock::duration>(
@@ -145,17 +155,23 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
   const auto seconds_left = [&] {
     return std::chrono::duration<double>(deadline - Clock::now()).count();
   };
-  solve_p1(problem, seconds_left(), progress, *cache, clock, layout);
+  // Every round ended with a proven optimum or infeasibility: the same on every run.
+  const auto proven = [](const matching::MatchingResult& m) {
+    return m.status == matching::SolveStatus::optimal ||
+           m.status == matching::SolveStatus::infeasible;
+  };
+  solve_p1(problem, seconds_left(), progress, cache, clock, layout);
+  bool all_proven = proven(layout.matching);
   bool laid_out = false;  // the stages ran for this layout's matching (or gave the cache's last)
   for (int round = 0;
        round < kMaxLoopRounds && layout.matching.has_solution() && seconds_left() > 0; ++round) {
-    auto failed = cache->failed.find(layout.matching.edges);
-    laid_out = failed == cache->failed.end();
+    auto failed = cache.failed.find(layout.matching.edges);
+    laid_out = failed == cache.failed.end();
     if (laid_out) {
-      lay_out(charts, graph, *cache, clock, layout);
+      lay_out(charts, graph, cache, clock, layout);
       if (layout.check.valid()) break;
       failed =
-          cache->failed.emplace(layout.matching.edges, loop_pairs(charts, graph.graph, layout.arcs))
+          cache.failed.emplace(layout.matching.edges, loop_pairs(charts, graph.graph, layout.arcs))
               .first;
     }
     const std::vector<EdgePair>& pairs = failed->second;
@@ -167,15 +183,38 @@ QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double a
     next.rounds = layout.rounds;
     next.reused_rounds = layout.reused_rounds + (laid_out ? 0 : 1);
     next.loop_conflicts = layout.loop_conflicts + pairs.size();
-    solve_p1(problem, seconds_left(), progress, *cache, clock, next);
+    solve_p1(problem, seconds_left(), progress, cache, clock, next);
+    all_proven = all_proven && proven(next.matching);
     if (!next.matching.has_solution()) break;
     layout = std::move(next);
     laid_out = false;
   }
-  if (!laid_out) lay_out(charts, graph, *cache, clock, layout);
+  if (all_proven && layout.matching.status == matching::SolveStatus::optimal)
+    cache.solved[key] = {layout.matching, layout.rounds, layout.loop_conflicts};
+  if (!laid_out && lay_out_result) lay_out(charts, graph, cache, clock, layout);
   layout.seconds = std::move(seconds);
+  return layout;
+}
+
+}  // namespace
+
+QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
+                        matching::SolverKind solver, const Limits& limits, const Progress& progress,
+                        ResolveCache* cache) {
+  ResolveCache own_cache;
+  if (!cache) cache = &own_cache;
+  QuadLayout layout = solve_in_rounds(charts, graph, alpha, solver, limits, progress, *cache, true);
   cache->last = layout;
   return layout;
+}
+
+bool presolve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
+                     matching::SolverKind solver, const Limits& limits, const Progress& progress,
+                     ResolveCache& cache) {
+  const std::pair<matching::SolverKind, double> key{solver, alpha};
+  if (!cache.solved.contains(key))
+    solve_in_rounds(charts, graph, alpha, solver, limits, progress, cache, false);
+  return cache.solved.contains(key);
 }
 
 double average_separatrix_length(const PortGraph& graph) {

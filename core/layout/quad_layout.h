@@ -18,6 +18,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/limits.h"
@@ -66,7 +67,16 @@ struct QuadLayout {
   int rounds = 0;  // solves of P1: the first and the loop rounds after it
   // Rounds whose matching had been laid out before (ResolveCache): no arcs, refinement or check.
   int reused_rounds = 0;
+  // The rounds of P1 were run at this alpha before (ResolveCache::solved): none ran now.
+  bool solved_before = false;
   std::vector<StageSeconds> seconds;
+};
+
+// What solve_layout() found at one alpha: the matching it returned and the rounds it took.
+struct SolvedAlpha {
+  matching::MatchingResult matching;
+  int rounds = 0;
+  std::size_t loop_conflicts = 0;
 };
 
 // What solve_layout() keeps from one alpha to the next of one graph (SPEC "Data flow"); pass the
@@ -77,11 +87,15 @@ struct QuadLayout {
 //    the chosen edges, not alpha, and neighbouring alphas often share an optimum (the weights
 //    are linear in alpha): of the 60 rounds of fertility's 41 slider positions, 0 to 20, 29
 //    chose a matching laid out before, among them the first round of alpha 5.5 to 9 (alpha 5's,
-//    whose patches are no disks) and the one round of alpha 10 to 11 (alpha 9.5's layout).
+//    whose patches are no disks) and the one round of alpha 10 to 11 (alpha 9.5's layout);
+//  - the matching found at every alpha solved before with a proven optimum: solving there again
+//    only lays it out. presolve_layout() fills it ahead of the slider (the page's worker, when
+//    idle), so that a move to a presolved alpha costs one layout and no P1.
 struct ResolveCache {
   matching::ExactSolverCache p1;
   // Per matching (its edges, increasing) whose layout failed the check: its loop pairs.
   std::map<std::vector<std::uint32_t>, std::vector<EdgePair>> failed;
+  std::map<std::pair<matching::SolverKind, double>, SolvedAlpha> solved;  // by solver and alpha
   std::optional<QuadLayout> last;  // the layout solve_layout() returned last
 };
 
@@ -92,6 +106,12 @@ LayoutGraph build_layout_graph(const Charts& charts, const LayoutOptions& option
 QuadLayout solve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
                         matching::SolverKind solver, const Limits& limits, const Progress& progress,
                         ResolveCache* cache = nullptr);
+
+// The rounds of solve_layout() at `alpha` into `cache.solved`, unless they are there; keeps
+// `cache.last`. Returns whether the alpha is solved now (false: no proven optimum in the limits).
+bool presolve_layout(const Charts& charts, const LayoutGraph& graph, double alpha,
+                     matching::SolverKind solver, const Limits& limits, const Progress& progress,
+                     ResolveCache& cache);
 
 // The mean length of the separatrices as grown (Table 6.1).
 double average_separatrix_length(const PortGraph& graph);

@@ -82,6 +82,22 @@ test('Layout: the sphere gets a valid layout of coloured patches; alpha solves a
   assert.match(readFileSync(`${RESULTS}/sphere-layout.ply`).subarray(0, 400).toString('latin1'), /property int patch/);
 });
 
+test('Layout: the worker solves the slider ahead while idle; a move there lays out its matching', async ({ page, url }) => {
+  await openPage(page, url, '#sample=genus2');
+  await page.getByRole('button', { name: 'Compute quad layout' }).click();
+  await laidOut(page, 5);
+  assert.match(await layoutFigure(page, 'rounds'), /^\d+$/, 'the first layout was solved');
+  const patchesAt5 = await layoutFigure(page, 'patches');
+  await page.waitForTimeout(3000); // 4.5 is presolved first, in tens of milliseconds
+  await page.locator('[data-role=alpha]').fill('4.5');
+  await laidOut(page, 4.5);
+  assert.match(await layoutFigure(page, 'rounds'), /^\d+, solved ahead$/);
+  assert.match(await verdict(page).textContent(), /^valid: \d+ patches, all quads$/);
+  await page.locator('[data-role=alpha]').fill('5');
+  await laidOut(page, 5);
+  assert.equal(await layoutFigure(page, 'patches'), patchesAt5, 'alpha 5 again');
+});
+
 test('Layout: a torus without a parameterization is a clear error and the page stays usable', async ({ page, url }) => {
   await openPage(page, url, '#sample=torus');
   await page.getByRole('button', { name: 'Compute quad layout' }).click();

@@ -5,16 +5,22 @@
 // alpha to the checked layout) and, measured in the page from the release, the time until the
 // figures showed the new layout (the re-solve, its display data, the messages) and until the frame
 // after it was drawn (headless Chromium draws with its software renderer: slow on large meshes).
-// Ends with the median and the largest of each and how many took 100 ms or more.
+// Ends with the median and the largest of each and how many took 100 ms or more. --wait S: the
+// slider is first moved S seconds after the layout, so that the worker has presolved positions
+// (web/src/worker/presolve.js; the P1 rounds column says "solved ahead" for those).
 // A development tool, not part of `npm test`.
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { launchBrowser, servePage } from './harness.js';
 import { idle, pickFiles } from './helpers.js';
 
-const [file, ...alphaArgs] = process.argv.slice(2);
-if (!file) {
-  console.error('usage: node tests/browser/slider_timing.js <mesh> [alpha...]');
+const args = process.argv.slice(2);
+const waitAt = args.indexOf('--wait');
+const waitSeconds = waitAt >= 0 ? Number(args[waitAt + 1]) : 0;
+if (waitAt >= 0) args.splice(waitAt, 2);
+const [file, ...alphaArgs] = args;
+if (!file || !(waitSeconds >= 0)) {
+  console.error('usage: node tests/browser/slider_timing.js <mesh> [--wait SECONDS] [alpha...]');
   process.exit(2);
 }
 const SLIDER = Array.from({ length: 41 }, (_, k) => k / 2);
@@ -81,7 +87,11 @@ try {
   await page.getByRole('button', { name: 'Compute quad layout' }).click();
   await shownAlpha(page, 5);
   console.log(`${path.basename(file)}: layout at alpha 5 in ${Date.now() - started} ms, ${await figure(page, 'patches')} patches`);
-  console.log(' alpha  re-solve ms  shown after ms  drawn after ms  patches');
+  if (waitSeconds > 0) {
+    console.log(`waiting ${waitSeconds} s (the worker presolves the slider's positions meanwhile)`);
+    await page.waitForTimeout(1000 * waitSeconds);
+  }
+  console.log(' alpha  re-solve ms  shown after ms  drawn after ms  patches  P1 rounds');
   const worker = [];
   const shown = [];
   const drawn = [];
@@ -96,7 +106,7 @@ try {
     shown.push(times.shown);
     drawn.push(times.drawn);
     const columns = [worker, shown, drawn].map((list, k) => list.at(-1).toFixed(0).padStart([12, 15, 15][k]));
-    console.log(`${String(alpha).padStart(6)} ${columns.join(' ')} ${(await figure(page, 'patches')).padStart(8)}`);
+    console.log(`${String(alpha).padStart(6)} ${columns.join(' ')} ${(await figure(page, 'patches')).padStart(8)}  ${await figure(page, 'rounds')}`);
   }
   console.log(summary('re-solve (worker)', worker));
   console.log(summary('shown after (page)', shown));

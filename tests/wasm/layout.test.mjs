@@ -89,6 +89,28 @@ test('alpha is solved again on the kept graph; the result matches a fresh run', 
   assert.equal(nativeLayout(file, 0).patches, coarse.patches, 'native at alpha 0');
 });
 
+test('presolved alphas give the layouts of fresh runs without solving; the shown layout stays', () => {
+  const file = sampleFile('genus2');
+  const first = wasmLayout(file, 5).layout.info;
+  const shownGlb = tessera.layoutGlb();
+  const alphas = [0, 1, 20];
+  for (const alpha of alphas) assert.equal(tessera.layoutPresolve(alpha, { maxSeconds: 30 }), true, `alpha ${alpha}`);
+  assert.ok(Buffer.from(tessera.layoutGlb()).equals(Buffer.from(shownGlb)), 'the shown layout is exported');
+  const shown = tessera.layoutSolve(5, {}, undefined).info;
+  assert.equal(shown.objective, first.objective);
+  const presolved = alphas.map((alpha) => tessera.layoutSolve(alpha, {}, undefined).info);
+  alphas.forEach((alpha, k) => {
+    const fresh = wasmLayout(file, alpha).layout.info; // a fresh graph and cache
+    assert.equal(presolved[k].solved_before, true, `alpha ${alpha}`);
+    assert.equal(fresh.solved_before, false, `alpha ${alpha}`);
+    for (const key of ['objective', 'patches', 'rounds', 'loop_conflicts', 'angle_rsd', 'valid']) {
+      assert.equal(presolved[k][key], fresh[key], `alpha ${alpha}: ${key}`);
+    }
+  });
+  assert.throws(() => tessera.layoutPresolve(-1, {}), (e) => e.kind === 'input' && /alpha/.test(e.message));
+  assert.throws(() => tessera.layoutPresolve(1, { maxSeconds: 0 }), (e) => e.kind === 'input' && /maxSeconds/.test(e.message));
+});
+
 test('the layout exports as GLB (0 validator errors, _PATCH) and PLY (face property patch)', async () => {
   wasmLayout(sampleFile('sphere'), 5);
   const glb = tessera.layoutGlb();

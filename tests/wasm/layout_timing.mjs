@@ -1,23 +1,27 @@
-// node tests/wasm/layout_timing.mjs <mesh> [--jumps] [alpha...]: times the quad layout of a mesh in
+// node tests/wasm/layout_timing.mjs <mesh> [--jumps] [--presolve] [alpha...]: times the quad layout of a mesh in
 // the wasm module (each stage, then P1 solved again on the kept graph for each alpha, as the page's
 // slider does, with the session's ResolveCache) beside the native CLI on the same file. Prints one
 // line per step, then the median and the largest re-solve and how many took 100 ms or more. The
 // alphas are solved one after the other; with --jumps each is reached in one move from the first
 // layout at alpha 5 instead (the graph is built again before each, so the cache holds only what
-// that first layout left).
+// that first layout left). --presolve: the slider's positions are presolved after the first
+// layout, as the page's worker does when idle, and the time that took is printed.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { loadTessera } from './tessera_module.mjs';
+import { MAX_PRESOLVE_SECONDS, presolveOrder } from '../../web/src/worker/presolve.js';
 
 const [file, ...rest] = process.argv.slice(2);
 if (!file) {
-  console.error('usage: node tests/wasm/layout_timing.mjs <mesh> [--jumps] [alpha...]');
+  console.error('usage: node tests/wasm/layout_timing.mjs <mesh> [--jumps] [--presolve] [alpha...]');
   process.exit(2);
 }
 const jumps = rest.includes('--jumps');
-const alphaArgs = rest.filter((arg) => arg !== '--jumps');
+const presolve = rest.includes('--presolve');
+const alphaArgs = rest.filter((arg) => arg !== '--jumps' && arg !== '--presolve');
+const SLIDER = Array.from({ length: 41 }, (_, k) => k / 2); // the page's alpha slider
 const alphas = alphaArgs.length > 0 ? alphaArgs.map(Number) : [0, 1, 20, 5];
 const cli = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../build/native/cli/tessera');
 const tessera = await loadTessera();
@@ -44,11 +48,27 @@ const describe = (info) =>
   `|S| ${info.singularities}, |E_G| ${info.graph_edges}, |I| ${info.conflicts}, |P| ${info.patches}, ` +
   `valid ${info.valid}, P1 ${info.matching_status} ${info.objective}, RSD ${info.angle_rsd.toFixed(2)} %`;
 console.log(`wasm layout: ${describe(first)}`);
+// The worker's presolve after the first layout (web/src/worker/presolve.js): the slider's other
+// positions, nearest to 5 first, each within MAX_PRESOLVE_SECONDS.
+function presolveSlider() {
+  const times = [];
+  for (const alpha of presolveOrder(SLIDER, 5)) {
+    const start = performance.now();
+    const solved = tessera.layoutPresolve(alpha, { maxSeconds: MAX_PRESOLVE_SECONDS });
+    times.push(performance.now() - start);
+    if (!solved) break;
+  }
+  const sum = times.reduce((a, b) => a + b, 0);
+  console.log(`wasm presolve of ${times.length} slider positions ${sum.toFixed(1).padStart(9)} ms (largest ${Math.max(...times).toFixed(1)} ms)`);
+}
+
 const resolves = [];
+if (presolve) presolveSlider();
 for (const alpha of alphas) {
   if (jumps) {
     tessera.layoutGraph({}, undefined);
     tessera.layoutSolve(5, {}, undefined);
+    if (presolve) presolveSlider();
   }
   const { result, ms } = timed(`re-solve at alpha ${alpha}`, () => tessera.layoutSolve(alpha, {}, undefined));
   resolves.push(ms);

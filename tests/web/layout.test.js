@@ -78,6 +78,13 @@ describe('layoutFigures', () => {
     expect(shown.objective).toBe('1055.64');
   });
 
+  it('says how many rounds P1 took and whether the worker solved them ahead', () => {
+    expect(layoutFigures({ info: { ...SPHERE, rounds: 3, solved_before: true }, solveSeconds: 0.01 }).values.rounds).toBe(
+      '3, solved ahead',
+    );
+    expect(layoutFigures({ info: { ...SPHERE, rounds: 1, solved_before: false }, solveSeconds: 0.01 }).values.rounds).toBe('1');
+  });
+
   it('shows a missing objective as a dash', () => {
     const { figures, values } = layoutFigures({ info: { ...SPHERE, objective: null }, solveSeconds: 1 });
     const [, , format] = figures.find(([key]) => key === 'objective');

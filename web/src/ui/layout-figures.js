@@ -51,6 +51,7 @@ export function layoutFigures({ info, solveSeconds }) {
     ['objective', 'P1 objective', number],
     ['lower_bound', 'P1 lower bound', number],
     ['matching_status', 'P1 status', String],
+    ['rounds', 'P1 rounds', String],
     ['solver', 'Solver', String],
     ['average_separatrix_length', 'Mean separatrix length', (x) => Number(x).toPrecision(4)],
     ['solve_seconds', 'Re-solve at this alpha', formatSeconds],
@@ -59,6 +60,8 @@ export function layoutFigures({ info, solveSeconds }) {
     ...info,
     ports: `${count(info.ports)} (${count(info.virtual_ports)})`,
     solve_seconds: solveSeconds,
+    // The worker solves the slider's positions ahead while idle (presolve.js).
+    rounds: `${info.rounds ?? '–'}${info.solved_before ? ', solved ahead' : ''}`,
   };
   for (const [stage, seconds] of stageTimes(info.seconds)) {
     const key = `time_${stage.replace(/\W+/g, '_')}`;

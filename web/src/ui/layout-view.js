@@ -49,7 +49,8 @@ export class LayoutView {
     const options = await this.field.computedOptions();
     if (!options || !this.mesh) return;
     const { align, sharp, h } = options;
-    await this.solve({ mesh: this.mesh, field: { align, sharp }, h, alpha: Number(this.alpha.value) });
+    const alpha = Number(this.alpha.value);
+    await this.solve({ mesh: this.mesh, field: { align, sharp }, h, alpha, presolve: sliderPositions(this.alpha) });
   }
 
   /**
@@ -128,4 +129,14 @@ export class LayoutView {
   showAlpha() {
     this.part('alpha-value').textContent = formatAlpha(this.alpha.value);
   }
+}
+
+/** The positions of a range input (min to max by step): the alphas the worker presolves when idle. */
+export function sliderPositions(input) {
+  const min = Number(input.min);
+  const max = Number(input.max);
+  const step = Number(input.step);
+  if (!(step > 0) || !(max >= min)) return [];
+  const count = Math.min(Math.floor((max - min) / step + 1e-9), 1000);
+  return Array.from({ length: count + 1 }, (_, k) => Number((min + k * step).toPrecision(12)));
 }

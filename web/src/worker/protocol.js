@@ -34,7 +34,8 @@ export const COMMANDS = Object.freeze({
   // figures (`tessera layout --json` plus problem_count, patches_not_quads); graph: the graph's;
   // solveSeconds: the re-solve in the worker (P1, arcs, patches, check); surface: the refined mesh
   // coloured by patch { positions, normals, colors, triangles }; arcs: line segments (Float32Array).
-  quadLayout: 'quadLayout', // payload: { mesh, field, h, alpha } -> { info, graph, resolved, solveSeconds, surface, arcs, singularities: { positions, valences }, markerRadius }
+  // presolve: the slider's positions (alphas), solved ahead while the worker is idle (presolve.js).
+  quadLayout: 'quadLayout', // payload: { mesh, field, h, alpha, presolve? } -> { info, graph, resolved, solveSeconds, surface, arcs, singularities: { positions, valences }, markerRadius }
   // The layout of { mesh, field, h, alpha } as a file ('glb' or 'ply'), computed again if the core
   // holds another one.
   layoutExport: 'layoutExport', // payload: { mesh, field, h, alpha, format } -> { bytes }

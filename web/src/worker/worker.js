@@ -5,6 +5,7 @@ import { polygonEdges, vertexNormals } from './display.js';
 import { cornerArrays, crossGlyphs, markerRadius, vertexPoints } from './field-display.js';
 import { tiledSurface } from './surface-display.js';
 import { arcSegments, patchSurface } from './layout-display.js';
+import { MAX_PRESOLVE_SECONDS, presolveInTurn, presolveOrder } from './presolve.js';
 import {
   FIELD_STAGES,
   GRAPH_STAGES,
@@ -28,6 +29,10 @@ const surfaces = new WeakMap(); // wasm module -> the key (surfaceKey) of the la
 // options of the session's cross field, parameterization, graph of the ports (graph: its figures)
 // and layout (the graph's key and alpha).
 let session = null;
+// presolveAround(): the running queue's number (a request stops it by taking the next), and what to
+// start once the current request is answered.
+let presolveToken = 0;
+let afterReply = null;
 
 function loadCore() {
   core ??= import(/* @vite-ignore */ CORE_URL)
@@ -97,10 +102,11 @@ const handlers = {
     return { info: result.info, corners: { ...corners, uv: result.uv } };
   },
 
-  async [COMMANDS.quadLayout]({ mesh, field, h, alpha }, progress) {
+  async [COMMANDS.quadLayout]({ mesh, field, h, alpha, presolve }, progress) {
     const shown = await sessionOf(mesh, progress);
     const { result, resolved, solveSeconds } = layoutOf(shown, { field, h, alpha }, progress, 0.95);
     progress('Preparing the view', 0.95);
+    if (solveSeconds <= MAX_PRESOLVE_SECONDS) afterReply = () => presolveAround(shown, alpha, presolve);
     return {
       info: result.info,
       graph: shown.graph,
@@ -268,6 +274,17 @@ function layoutOf(shown, { field, h, alpha }, progress, to) {
   return { result, resolved, solveSeconds };
 }
 
+// The slider's other positions solved ahead, nearest to alpha first, while no request comes in
+// (presolve.js); any request stops it, a layout starts it again around its alpha. Each presolve
+// stops at MAX_PRESOLVE_SECONDS, so that a request waits no longer than that for it.
+function presolveAround(shown, alpha, alphas) {
+  const token = ++presolveToken;
+  const graphKey = shown.graphKey;
+  const stillWanted = () => token === presolveToken && session === shown && shown.graphKey === graphKey;
+  const options = { maxSeconds: MAX_PRESOLVE_SECONDS };
+  presolveInTurn(presolveOrder(alphas, alpha), (a) => shown.module.layoutPresolve(a, options), stillWanted);
+}
+
 // The parameterization of the session's field with unit h; it replaces the graph and the layout.
 function computeParam(shown, field, h, onProgress) {
   Object.assign(shown, { paramKey: null, graphKey: null, graph: null, layoutKey: null });
@@ -306,12 +323,16 @@ function describeFailure(error) {
 
 self.onmessage = async ({ data: { id, command, payload } }) => {
   const progress = (stage, fraction) => self.postMessage(progressEvent(id, stage, fraction));
+  presolveToken += 1;
+  afterReply = null;
   try {
     if (!Object.hasOwn(handlers, command)) throw new Error(`unknown command "${command}"`);
     const owned = ownedBuffers(await handlers[command](payload ?? {}, progress));
     self.postMessage(resultEvent(id, owned.payload), owned.transfer);
+    afterReply?.();
   } catch (error) {
     const { kind, message } = describeFailure(error);
     self.postMessage(errorEvent(id, kind, message));
   }
+  afterReply = null;
 };
