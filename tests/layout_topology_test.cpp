@@ -81,16 +81,29 @@ TEST(LayoutTopology, SameInputSameLayout) {
   EXPECT_EQ(a.layout.refined.mesh.face_attributes, b.layout.refined.mesh.face_attributes);
 }
 
+// The alpha slider on the thin torus's graph of the ports (its layout at alpha 5 takes a loop
+// round): P1 solved again per alpha, with a ResolveCache or without (null).
+class ThinTorusSlider : public ::testing::Test {
+ protected:
+  layout::QuadLayout solve(double alpha, layout::ResolveCache* cache) const {
+    return layout::solve_layout(input_.charts(), graph_, alpha, matching::SolverKind::exact,
+                                options_.limits, Progress(), cache);
+  }
+  bool presolve(double alpha, layout::ResolveCache& cache) const {
+    return layout::presolve_layout(input_.charts(), graph_, alpha, matching::SolverKind::exact,
+                                   options_.limits, Progress(), cache);
+  }
+
+ private:
+  const test::Parameterized input_ = test::parameterized(thin_torus());
+  const layout::LayoutOptions options_;
+  const layout::LayoutGraph graph_ =
+      layout::build_layout_graph(input_.charts(), options_, Progress());
+};
+
 // The slider's re-solves through one ResolveCache give the layouts of fresh solves; a matching laid
 // out before (the failed first round, the last layout) is not laid out again.
-TEST(LayoutTopology, AResolveCacheGivesTheLayoutsOfFreshSolves) {
-  const test::Parameterized input = test::parameterized(thin_torus());
-  const layout::LayoutOptions options;
-  const layout::LayoutGraph graph = layout::build_layout_graph(input.charts(), options, Progress());
-  const auto solve = [&](double alpha, layout::ResolveCache* cache) {
-    return layout::solve_layout(input.charts(), graph, alpha, matching::SolverKind::exact,
-                                options.limits, Progress(), cache);
-  };
+TEST_F(ThinTorusSlider, AResolveCacheGivesTheLayoutsOfFreshSolves) {
   layout::ResolveCache cache;
   std::vector<int> reused;
   for (double alpha : {5.0, 5.0, 1.0, 5.0, 5.5}) {
@@ -117,19 +130,10 @@ TEST(LayoutTopology, AResolveCacheGivesTheLayoutsOfFreshSolves) {
 
 // The page's worker presolves the slider's alphas when idle: a solve at a presolved alpha runs no
 // round of P1 and gives the layout of a fresh solve; presolving keeps the last layout returned.
-TEST(LayoutTopology, APresolvedAlphaIsLaidOutWithoutSolving) {
-  const test::Parameterized input = test::parameterized(thin_torus());
-  const layout::LayoutOptions options;
-  const layout::LayoutGraph graph = layout::build_layout_graph(input.charts(), options, Progress());
-  const auto solve = [&](double alpha, layout::ResolveCache* cache) {
-    return layout::solve_layout(input.charts(), graph, alpha, matching::SolverKind::exact,
-                                options.limits, Progress(), cache);
-  };
+TEST_F(ThinTorusSlider, APresolvedAlphaIsLaidOutWithoutSolving) {
   layout::ResolveCache cache;
   const layout::QuadLayout first = solve(5.0, &cache);
-  for (double alpha : {1.0, 0.0, 20.0})
-    EXPECT_TRUE(layout::presolve_layout(input.charts(), graph, alpha, matching::SolverKind::exact,
-                                        options.limits, Progress(), cache));
+  for (double alpha : {1.0, 0.0, 20.0}) EXPECT_TRUE(presolve(alpha, cache));
   ASSERT_TRUE(cache.last);
   EXPECT_EQ(cache.last->alpha, 5.0);
   EXPECT_EQ(cache.last->matching.edges, first.matching.edges);
