@@ -155,16 +155,20 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
   const auto seconds_left = [&] {
     return std::chrono::duration<double>(deadline - Clock::now()).count();
   };
-  // Every round ended with a proven optimum or infeasibility: the same on every run.
+  // Every round ended with a proven optimum or infeasibility and none was left out for the
+  // deadline: the result is the same on every run (and goes into cache.solved).
   const auto proven = [](const matching::MatchingResult& m) {
     return m.status == matching::SolveStatus::optimal ||
            m.status == matching::SolveStatus::infeasible;
   };
   solve_p1(problem, seconds_left(), progress, cache, clock, layout);
-  bool all_proven = proven(layout.matching);
+  bool repeatable = proven(layout.matching);
   bool laid_out = false;  // the stages ran for this layout's matching (or gave the cache's last)
-  for (int round = 0;
-       round < kMaxLoopRounds && layout.matching.has_solution() && seconds_left() > 0; ++round) {
+  for (int round = 0; round < kMaxLoopRounds && layout.matching.has_solution(); ++round) {
+    if (seconds_left() <= 0) {
+      repeatable = false;
+      break;
+    }
     auto failed = cache.failed.find(layout.matching.edges);
     laid_out = failed == cache.failed.end();
     if (laid_out) {
@@ -184,12 +188,12 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
     next.reused_rounds = layout.reused_rounds + (laid_out ? 0 : 1);
     next.loop_conflicts = layout.loop_conflicts + pairs.size();
     solve_p1(problem, seconds_left(), progress, cache, clock, next);
-    all_proven = all_proven && proven(next.matching);
+    repeatable = repeatable && proven(next.matching);
     if (!next.matching.has_solution()) break;
     layout = std::move(next);
     laid_out = false;
   }
-  if (all_proven && layout.matching.status == matching::SolveStatus::optimal)
+  if (repeatable && layout.matching.status == matching::SolveStatus::optimal)
     cache.solved[key] = {layout.matching, layout.rounds, layout.loop_conflicts};
   if (!laid_out && lay_out_result) lay_out(charts, graph, cache, clock, layout);
   layout.seconds = std::move(seconds);
