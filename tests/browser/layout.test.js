@@ -92,6 +92,7 @@ test('Layout: the worker solves the slider ahead while idle; a move there lays o
   await page.locator('[data-role=alpha]').fill('4.5');
   await laidOut(page, 4.5);
   assert.match(await layoutFigure(page, 'rounds'), /^\d+, solved ahead$/);
+  await page.screenshot({ path: `${RESULTS}/layout-genus2-presolved.png` });
   assert.match(await verdict(page).textContent(), /^valid: \d+ patches, all quads$/);
   await page.locator('[data-role=alpha]').fill('5');
   await laidOut(page, 5);
