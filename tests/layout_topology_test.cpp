@@ -98,7 +98,7 @@ class ThinTorusSlider : public ::testing::Test {
 
  private:
   const test::Parameterized input_ = test::parameterized(thin_torus());
-  const layout::LayoutOptions options_;
+  const layout::LayoutOptions options_{};
   const layout::LayoutGraph graph_ =
       layout::build_layout_graph(input_.charts(), options_, Progress());
 };
