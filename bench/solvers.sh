@@ -13,7 +13,10 @@
 #   synthetic/  tessera_p1_instances (bench/p1_instances.cpp), shaped like thesis Appendix B.
 # An instance is a pair <name>.json / <name>.lp (tessera solve reads the JSON, glpsol and cbc the
 # LP form of the same program). Times are CPU seconds (user + system, 1 ms resolution) of each
-# process, start-up and file reading included; wall seconds are kept in the TSV (solvers.tsv).
+# process, start-up and file reading included; wall seconds are kept in the TSV (solvers.tsv), and
+# for exact, glpk and glpk-tuned the seconds of the solve alone ("seconds" of tessera solve --json:
+# the model built and solved in one process, start-up and reading left out), which compare the
+# solvers on small instances where start-up is most of a process's time.
 # glpsol or cbc missing: that column is skipped with a message (scripts/setup.sh installs both).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -43,21 +46,25 @@ done
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# The P1 instances of every shared mesh's layout at each alpha; one line per mesh on stderr.
+# The P1 instances of every shared mesh's layout at each alpha; one line per mesh on stderr. The
+# separatrices may grow for 300 s (the CLI's default stops at 60 s, which dragon's graph nears on a
+# busy machine): the instances are the same whatever the load.
 make_mesh_instances() {
-  local out=$1 mesh name alpha
+  local out=$1 mesh name alpha made
   mkdir -p "$out"
   for mesh in "$meshes"/*.obj "$meshes"/*.off; do
     [ -f "$mesh" ] || continue
     name=$(basename "${mesh%.*}")
+    made=()
     for alpha in "${alphas[@]}"; do
-      if ! "$tessera" layout "$mesh" --alpha "$alpha" --export-p1 "$out" \
-        --max-solve-seconds 5 > /dev/null 2> "$tmp/layout.err"; then
-        echo "solvers.sh: $name: no P1 instance, the layout stopped: $(grep -m1 'error' "$tmp/layout.err")" >&2
+      if ! "$tessera" layout "$mesh" --alpha "$alpha" --export-p1 "$out" --max-solve-seconds 5 \
+        --max-trace-seconds 300 > /dev/null 2> "$tmp/layout.err"; then
+        echo "solvers.sh: $name: no P1 instance at alpha $alpha, the layout stopped: $(grep -m1 'error' "$tmp/layout.err")" >&2
         break
       fi
+      made+=("$alpha")
     done
-    [ -f "$out/${name}_a0.lp" ] && echo "solvers.sh: $name: instances at alpha ${alphas[*]}" >&2
+    [ ${#made[@]} -gt 0 ] && echo "solvers.sh: $name: instances at alpha ${made[*]}" >&2
   done
 }
 
@@ -78,14 +85,15 @@ timed() {
 
 json_field() { sed -n "s/^  \"$1\": \"\{0,1\}\([^\",]*\)\"\{0,1\},\{0,1\}$/\1/p" "$tmp/out" | head -n 1; }
 
-row() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$group" "$name" "$edges" "$conflicts" "$1" "$2" "$3" "$cpu" "$wall" >> "$tsv"; }
+# row solver status objective [solve-seconds]
+row() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$group" "$name" "$edges" "$conflicts" "$1" "$2" "$3" "$cpu" "$wall" "${4:-}" >> "$tsv"; }
 
 solve_with_tessera() {
   timed "$tessera" solve "$json" --solver "$1" --time-limit "$limit" --json
   edges=$(sed -n 's/^    "edges": \([0-9]*\),\{0,1\}$/\1/p' "$tmp/out")
   conflicts=$(sed -n 's/^    "conflicts": \([0-9]*\)$/\1/p' "$tmp/out")
   local status; status=$(json_field status)
-  row "$1" "${status:-error}" "$(json_field objective)"
+  row "$1" "${status:-error}" "$(json_field objective)" "$(json_field seconds)"
 }
 
 solve_with_glpsol() {
@@ -119,7 +127,7 @@ if [ -z "$dir" ]; then
   "$generator" "$dir/synthetic" > /dev/null || exit 1
 fi
 tsv=$dir/solvers.tsv
-printf 'set\tinstance\tedges\tconflicts\tsolver\tstatus\tobjective\tcpu\twall\n' > "$tsv"
+printf 'set\tinstance\tedges\tconflicts\tsolver\tstatus\tobjective\tcpu\twall\tsolve\n' > "$tsv"
 for lp in "$dir"/*.lp "$dir"/*/*.lp; do
   [ -f "$lp" ] || continue
   name=$(basename "${lp%.lp}")
