@@ -10,6 +10,9 @@
 #   meshes/     program P1 of `tessera layout <mesh> --alpha A --export-p1` for every mesh of
 #               ../shared/meshes (or --meshes DIR) and A in 0, 1, 5, 20; a mesh whose layout
 #               stops before P1 (a limit, an error) is reported and has no instance;
+#   loop-rounds/ the programs of the layout's loop rounds at those alphas (<mesh>_a<A>_r<k>: P1
+#               with the loop conflicts of the rounds before, Ch. 5), where the slider's cold
+#               re-solves spend most of their P1 time;
 #   synthetic/  tessera_p1_instances (bench/p1_instances.cpp), shaped like thesis Appendix B.
 # An instance is a pair <name>.json / <name>.lp (tessera solve reads the JSON, glpsol and cbc the
 # LP form of the same program). Times are CPU seconds (user + system, 1 ms resolution) of each
@@ -30,7 +33,7 @@ while [ $# -gt 0 ]; do
   case $1 in
     --time-limit) limit=$2; shift 2 ;;
     --meshes) meshes=$2; shift 2 ;;
-    --help|-h) sed -n 2,18p "$0"; exit 0 ;;
+    --help|-h) sed -n 2,21p "$0"; exit 0 ;;
     *) dir=$1; shift ;;
   esac
 done
@@ -50,8 +53,8 @@ trap 'rm -rf "$tmp"' EXIT
 # separatrices may grow for 300 s (the CLI's default stops at 60 s, which dragon's graph nears on a
 # busy machine): the instances are the same whatever the load.
 make_mesh_instances() {
-  local out=$1 mesh name alpha made
-  mkdir -p "$out"
+  local out=$1 rounds=$2 mesh name alpha made
+  mkdir -p "$out" "$rounds"
   for mesh in "$meshes"/*.obj "$meshes"/*.off; do
     [ -f "$mesh" ] || continue
     name=$(basename "${mesh%.*}")
@@ -62,6 +65,7 @@ make_mesh_instances() {
         echo "solvers.sh: $name: no P1 instance at alpha $alpha, the layout stopped: $(grep -m1 'error' "$tmp/layout.err")" >&2
         break
       fi
+      mv "$out/${name}_a${alpha}"_r* "$rounds" 2> /dev/null
       made+=("$alpha")
     done
     [ ${#made[@]} -gt 0 ] && echo "solvers.sh: $name: instances at alpha ${made[*]}" >&2
@@ -122,7 +126,7 @@ solve_with_cbc() {
 if [ -z "$dir" ]; then
   dir=$root/build/bench-p1
   rm -rf "$dir"
-  make_mesh_instances "$dir/meshes"
+  make_mesh_instances "$dir/meshes" "$dir/loop-rounds"
   [ -x "$generator" ] || { echo "solvers.sh: build tessera_p1_instances first"; exit 2; }
   "$generator" "$dir/synthetic" > /dev/null || exit 1
 fi

@@ -43,8 +43,9 @@ void print_layout_help() {
       "                       attribute, the arcs as lines, the singularities as points\n"
       "  --ply FILE.ply       the refined mesh with an integer face property 'patch'\n"
       "  --export-p1 DIR      program P1 of this run as DIR/<mesh>_a<alpha>.lp (CPLEX LP, read by\n"
-      "                       glpsol --lp and cbc) and DIR/<mesh>_a<alpha>.json (tessera solve);\n"
-      "                       written before P1 is solved\n"
+      "                       glpsol --lp and cbc) and DIR/<mesh>_a<alpha>.json (tessera solve),\n"
+      "                       written before P1 is solved; the loop rounds' programs after it,\n"
+      "                       as DIR/<mesh>_a<alpha>_r2.lp, _r3, ... (and .json)\n"
       "  --json               one JSON object on stdout: singularities, graph_edges, conflicts,\n"
       "                       patches, angle_rsd (percent), valid, objective, seconds (per\n"
       "                       stage), and alpha, ports, virtual_ports, nodes, arcs,\n"
@@ -127,18 +128,30 @@ std::string layout_text(const nlohmann::ordered_json& json) {
   return result;
 }
 
-// Program P1 of the run (Ch. 5) as DIR/<mesh>_a<alpha>.{lp,json}, the instance files of issue 5,
-// so that the bench solves exactly what the layout solves.
-void export_p1(const std::string& dir, const std::string& mesh_path, const layout::PortGraph& graph,
-               double alpha) {
+// One program P1 of the run (Ch. 5) as DIR/<mesh>_a<alpha><round>.{lp,json}, the instance files
+// of issue 5, so that the bench solves exactly what the layout solves.
+void export_p1(const std::string& dir, const std::string& mesh_path, double alpha,
+               const std::string& round, const matching::MatchingProblem& problem) {
   std::filesystem::create_directories(dir);
   char suffix[32];
   std::snprintf(suffix, sizeof suffix, "_a%g", alpha);
   const std::filesystem::path stem =
-      std::filesystem::path(dir) / (std::filesystem::path(mesh_path).stem().string() + suffix);
-  const matching::MatchingProblem problem = layout::matching_problem(graph, alpha);
+      std::filesystem::path(dir) /
+      (std::filesystem::path(mesh_path).stem().string() + suffix + round);
   write_file_bytes(stem.string() + ".json", matching::write_instance_json(problem));
   write_file_bytes(stem.string() + ".lp", matching::write_instance_lp(problem));
+}
+
+// The loop rounds' programs (the first round's with the loop conflicts of the rounds before) as
+// DIR/<mesh>_a<alpha>_r<k>, k = 2, 3, ...: the slider's re-solves spend most of their P1 time in
+// them.
+void export_loop_rounds(const std::string& dir, const std::string& mesh_path,
+                        const layout::PortGraph& graph, const layout::QuadLayout& layout) {
+  matching::MatchingProblem problem = layout::matching_problem(graph, layout.alpha);
+  for (std::size_t k = 0; k < layout.loop_rounds.size(); ++k) {
+    layout::add_loop_conflicts(layout.loop_rounds[k], problem);
+    export_p1(dir, mesh_path, layout.alpha, "_r" + std::to_string(k + 2), problem);
+  }
 }
 
 }  // namespace
@@ -178,9 +191,12 @@ int layout_command(const Args& args) {
   layout::LayoutGraph graph = layout::build_layout_graph(charts, options, progress);
   graph.seconds.insert(graph.seconds.begin(), {"field and param", param_seconds});
   if (parsed.has("--export-p1"))
-    export_p1(parsed.value("--export-p1"), parsed.positional[0], graph.graph, alpha);
+    export_p1(parsed.value("--export-p1"), parsed.positional[0], alpha, "",
+              layout::matching_problem(graph.graph, alpha));
   const layout::QuadLayout result =
       layout::solve_layout(charts, graph, alpha, solver, options.limits, progress);
+  if (parsed.has("--export-p1"))
+    export_loop_rounds(parsed.value("--export-p1"), parsed.positional[0], graph.graph, result);
 
   if (parsed.has("-o"))
     write_file_bytes(parsed.value("-o"), write_glb(layout::layout_scene(charts, graph, result)));

@@ -100,5 +100,32 @@ TEST(CliLayout, ExportsTheP1InstanceItSolves) {
   }
 }
 
+// A thin torus whose first matching closes loops (layout_topology_test): every loop round's
+// program is written after the first, and the last one's optimum is the layout's.
+TEST(CliLayout, ExportsTheLoopRoundsItSolves) {
+  const std::string mesh = write_temp_file("thin-torus.obj", write_obj(torus(1, 0.25, 64, 12)));
+  const std::string dir = temp_path("p1-loop-rounds");
+  const auto layout = run_cli("layout --json '" + mesh + "' --alpha 5 --export-p1 '" + dir + "'");
+  ASSERT_EQ(layout.exit_code, 0) << layout.out;
+  const nlohmann::json json = nlohmann::json::parse(layout.out);
+  const int rounds = json["rounds"].get<int>();
+  ASSERT_GE(rounds, 2);
+  const std::string stem = dir + "/" + std::filesystem::path(mesh).stem().string() + "_a5";
+  double objective = solve_json("'" + stem + ".json'")["objective"].get<double>();
+  std::size_t conflicts = json["conflicts"].get<std::size_t>();
+  for (int k = 2; k <= rounds; ++k) {
+    const nlohmann::json r = solve_json("'" + stem + "_r" + std::to_string(k) + ".lp'");
+    EXPECT_EQ(r["status"], "optimal") << k;
+    EXPECT_GT(r["instance"]["conflicts"].get<std::size_t>(), conflicts) << k;
+    EXPECT_GE(r["objective"].get<double>(), objective - 1e-9) << k;  // more conflicts
+    conflicts = r["instance"]["conflicts"].get<std::size_t>();
+    objective = r["objective"].get<double>();
+  }
+  EXPECT_EQ(conflicts,
+            json["conflicts"].get<std::size_t>() + json["loop_conflicts"].get<std::size_t>());
+  EXPECT_NEAR(objective, json["objective"].get<double>(), 1e-9);
+  EXPECT_FALSE(std::filesystem::exists(stem + "_r" + std::to_string(rounds + 1) + ".lp"));
+}
+
 }  // namespace
 }  // namespace tessera::matching

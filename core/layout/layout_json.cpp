@@ -48,7 +48,9 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   json["lower_bound"] = finite_or_null(layout.matching.lower_bound);
   json["curved_edges"] = graph.curved_edges;
   json["twin_edges"] = graph.twin_edges;
-  json["loop_conflicts"] = layout.loop_conflicts;
+  std::size_t loop_conflicts = 0;
+  for (const std::vector<EdgePair>& round : layout.loop_rounds) loop_conflicts += round.size();
+  json["loop_conflicts"] = loop_conflicts;
   json["rounds"] = layout.rounds;
   json["reused_rounds"] = layout.reused_rounds;
   json["solved_before"] = layout.solved_before;

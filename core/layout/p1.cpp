@@ -15,4 +15,9 @@ matching::MatchingProblem matching_problem(const PortGraph& graph, double alpha)
   return problem;
 }
 
+void add_loop_conflicts(const std::vector<EdgePair>& loop_pairs,
+                        matching::MatchingProblem& problem) {
+  for (const EdgePair& pair : loop_pairs) problem.conflicts.push_back({pair.first, pair.second});
+}
+
 }  // namespace tessera::layout

@@ -14,4 +14,9 @@ namespace tessera::layout {
 
 matching::MatchingProblem matching_problem(const PortGraph& graph, double alpha);
 
+// The pairs of chosen edges that closed loops in a round's layout (Ch. 5, conflicts.h
+// loop_pairs()) as conflicts of P1 for the next round.
+void add_loop_conflicts(const std::vector<EdgePair>& loop_pairs,
+                        matching::MatchingProblem& problem);
+
 }  // namespace tessera::layout

@@ -140,7 +140,7 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
   if (const auto known = cache.solved.find(key); known != cache.solved.end()) {
     layout.matching = known->second.matching;
     layout.rounds = known->second.rounds;
-    layout.loop_conflicts = known->second.loop_conflicts;
+    layout.loop_rounds = known->second.loop_rounds;
     layout.reused_rounds = layout.rounds - 1;  // the failed rounds are in cache.failed
     layout.solved_before = true;
     clock.stage_done("P1");
@@ -180,13 +180,14 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
     }
     const std::vector<EdgePair>& pairs = failed->second;
     if (pairs.empty()) break;
-    for (const EdgePair& pair : pairs) problem.conflicts.push_back({pair.first, pair.second});
+    add_loop_conflicts(pairs, problem);
     QuadLayout next;
     next.alpha = alpha;
     next.solver = solver;
     next.rounds = layout.rounds;
     next.reused_rounds = layout.reused_rounds + (laid_out ? 0 : 1);
-    next.loop_conflicts = layout.loop_conflicts + pairs.size();
+    next.loop_rounds = layout.loop_rounds;
+    next.loop_rounds.push_back(pairs);
     solve_p1(problem, seconds_left(), progress, cache, clock, next);
     repeatable = repeatable && proven(next.matching);
     if (!next.matching.has_solution()) break;
@@ -194,7 +195,7 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
     laid_out = false;
   }
   if (repeatable && layout.matching.status == matching::SolveStatus::optimal)
-    cache.solved[key] = {layout.matching, layout.rounds, layout.loop_conflicts};
+    cache.solved[key] = {layout.matching, layout.rounds, layout.loop_rounds};
   if (!laid_out && lay_out_result) lay_out(charts, graph, cache, clock, layout);
   layout.seconds = std::move(seconds);
   return layout;

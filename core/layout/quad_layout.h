@@ -62,8 +62,9 @@ struct QuadLayout {
   RefinedMesh refined;  // refined.mesh.face_attributes["patch"]
   LayoutCheck check;
   double angle_rsd = 0;  // percent, over all patch corners (parameter space)
-  // Pairs of chosen arcs closing loops (conflicts.h, loop_pairs()) added while the check failed.
-  std::size_t loop_conflicts = 0;
+  // Pairs of chosen arcs closing loops (conflicts.h, loop_pairs()) that each failed round added to
+  // P1, in the order of the rounds: round k + 2 solved P1 with loop_rounds[0..k] added.
+  std::vector<std::vector<EdgePair>> loop_rounds;
   int rounds = 0;  // solves of P1: the first and the loop rounds after it
   // Rounds whose matching had been laid out before (ResolveCache): no arcs, refinement or check.
   int reused_rounds = 0;
@@ -76,7 +77,7 @@ struct QuadLayout {
 struct SolvedAlpha {
   matching::MatchingResult matching;
   int rounds = 0;
-  std::size_t loop_conflicts = 0;
+  std::vector<std::vector<EdgePair>> loop_rounds;
 };
 
 // What solve_layout() keeps from one alpha to the next of one graph (SPEC "Data flow"); pass the
