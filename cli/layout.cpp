@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "commands.h"
 #include "export/glb.h"
@@ -142,12 +143,11 @@ void export_p1(const std::string& dir, const std::string& mesh_path, double alph
   write_file_bytes(stem.string() + ".lp", matching::write_instance_lp(problem));
 }
 
-// The loop rounds' programs (the first round's with the loop conflicts of the rounds before) as
-// DIR/<mesh>_a<alpha>_r<k>, k = 2, 3, ...: the slider's re-solves spend most of their P1 time in
-// them.
+// The loop rounds' programs (the first round's `problem` with the loop conflicts of the rounds
+// before) as DIR/<mesh>_a<alpha>_r<k>, k = 2, 3, ...: the slider's re-solves spend most of their
+// P1 time in them.
 void export_loop_rounds(const std::string& dir, const std::string& mesh_path,
-                        const layout::PortGraph& graph, const layout::QuadLayout& layout) {
-  matching::MatchingProblem problem = layout::matching_problem(graph, layout.alpha);
+                        matching::MatchingProblem problem, const layout::QuadLayout& layout) {
   for (std::size_t k = 0; k < layout.loop_rounds.size(); ++k) {
     layout::add_loop_conflicts(layout.loop_rounds[k], problem);
     export_p1(dir, mesh_path, layout.alpha, "_r" + std::to_string(k + 2), problem);
@@ -190,13 +190,15 @@ int layout_command(const Args& args) {
   const layout::Charts charts{mesh, connectivity, param};
   layout::LayoutGraph graph = layout::build_layout_graph(charts, options, progress);
   graph.seconds.insert(graph.seconds.begin(), {"field and param", param_seconds});
-  if (parsed.has("--export-p1"))
-    export_p1(parsed.value("--export-p1"), parsed.positional[0], alpha, "",
-              layout::matching_problem(graph.graph, alpha));
+  const std::optional<matching::MatchingProblem> first_round =
+      parsed.has("--export-p1") ? std::optional(layout::matching_problem(graph.graph, alpha))
+                                : std::nullopt;
+  if (first_round)
+    export_p1(parsed.value("--export-p1"), parsed.positional[0], alpha, "", *first_round);
   const layout::QuadLayout result =
       layout::solve_layout(charts, graph, alpha, solver, options.limits, progress);
-  if (parsed.has("--export-p1"))
-    export_loop_rounds(parsed.value("--export-p1"), parsed.positional[0], graph.graph, result);
+  if (first_round)
+    export_loop_rounds(parsed.value("--export-p1"), parsed.positional[0], *first_round, result);
 
   if (parsed.has("-o"))
     write_file_bytes(parsed.value("-o"), write_glb(layout::layout_scene(charts, graph, result)));
