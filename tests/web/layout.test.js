@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { formatAlpha, layoutFigures, layoutVerdict } from '../../web/src/ui/layout-figures.js';
 import { arcSegments, patchSurface } from '../../web/src/worker/layout-display.js';
+import { sameLayout } from '../../web/src/ui/layout-view.js';
 import { GRAPH_STAGES, SOLVE_STAGES, planStages, stagedProgress } from '../../web/src/worker/stages.js';
 
 // The core's figures of the sphere's layout (tessera layout sphere.obj --json), trimmed.
@@ -150,5 +151,30 @@ describe('layout stages', () => {
       ['Growing the separatrices (motorcycle growing)', 0.5 / stages.length],
       ['Tracing the arcs and cutting the mesh into patches', 1],
     ]);
+  });
+});
+
+describe('sameLayout', () => {
+  const layout = () => ({
+    arcs: new Float32Array([0, 0, 0, 1, 0, 0]),
+    surface: { positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), colors: new Float32Array(9).fill(0.5), triangles: new Uint32Array([0, 1, 2]) },
+    singularities: { positions: new Float32Array([0, 0, 0]), valences: new Int32Array([3]) },
+    markerRadius: 0.1,
+  });
+
+  it('keeps the layers of a result that draws the same', () => {
+    expect(sameLayout(layout(), layout())).toBe(true);
+  });
+
+  it('sees a moved arc, a recoloured patch, a new triangle or another singularity', () => {
+    const moved = layout();
+    moved.arcs[4] = 0.5;
+    const recoloured = layout();
+    recoloured.surface.colors[0] = 0.25;
+    const longer = layout();
+    longer.surface.triangles = new Uint32Array([0, 1, 2, 0, 2, 1]);
+    const singular = layout();
+    singular.singularities.valences = new Int32Array([5]);
+    for (const other of [moved, recoloured, longer, singular]) expect(sameLayout(layout(), other)).toBe(false);
   });
 });

@@ -81,17 +81,13 @@ export class LayoutView {
   }
 
   show(payload, result) {
+    // A new alpha often gives the layout on screen again: its figures change, its 3D layers are
+    // kept rather than built and uploaded again.
+    const sameLayers = this.shown !== null && sameLayout(this.shown.result, result);
     this.shown = { payload, result };
-    this.viewer.setLayer('patches', patchMesh(result.surface));
-    this.viewer.setLayer('arcs', arcLines(result.arcs));
-    const { positions, valences } = result.singularities;
-    const markers = valences.length > 0 ? singularityMarkers(positions, valences, result.markerRadius) : null;
-    this.viewer.setLayer('layout-singularities', markers);
-    this.viewer.setSurfaceCovered(true);
-    this.field.hideCrosses();
+    if (!sameLayers) this.showLayers(result);
 
-    const verdict = layoutVerdict(result.info);
-    const line = this.part('layout-verdict');
+    const verdict = layoutVerdict(result.info);    const line = this.part('layout-verdict');
     line.textContent = verdict.text;
     line.dataset.valid = String(verdict.valid);
     const { figures, values } = layoutFigures(result);
@@ -105,6 +101,16 @@ export class LayoutView {
     );
     this.part('layout-result').hidden = false;
     this.part('layout-result').scrollIntoView({ block: 'nearest' });
+  }
+
+  showLayers(result) {
+    this.viewer.setLayer('patches', patchMesh(result.surface));
+    this.viewer.setLayer('arcs', arcLines(result.arcs));
+    const { positions, valences } = result.singularities;
+    const markers = valences.length > 0 ? singularityMarkers(positions, valences, result.markerRadius) : null;
+    this.viewer.setLayer('layout-singularities', markers);
+    this.viewer.setSurfaceCovered(true);
+    this.field.hideCrosses();
   }
 
   async download(format) {
@@ -129,6 +135,20 @@ export class LayoutView {
   showAlpha() {
     this.part('alpha-value').textContent = formatAlpha(this.alpha.value);
   }
+}
+
+/** Whether two layout results draw the same: the same arcs, patches and singularities. */
+export function sameLayout(a, b) {
+  const same = (x, y) => x?.length === y?.length && x.every((value, i) => value === y[i]);
+  return (
+    same(a.arcs, b.arcs) &&
+    same(a.surface.positions, b.surface.positions) &&
+    same(a.surface.colors, b.surface.colors) &&
+    same(a.surface.triangles, b.surface.triangles) &&
+    same(a.singularities.positions, b.singularities.positions) &&
+    same(a.singularities.valences, b.singularities.valences) &&
+    a.markerRadius === b.markerRadius
+  );
 }
 
 /** The positions of a range input (min to max by step): the alphas the worker presolves when idle. */
