@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
       const double total = ms_since(begin);
       std::printf("%6g %9.1f %8.1f %8.1f %8.1f %6d %6d %6lld %5zu %6s %9.2f %6.2f\n", alpha, total,
                   stage_ms(layout, "P1"), stage_ms(layout, "layout"), stage_ms(layout, "check"),
-                  layout.rounds, layout.reused_rounds,
+                  layout.rounds(), layout.reused_rounds,
                   static_cast<long long>(layout.matching.nodes), layout.check.patch_count,
                   layout.check.valid() ? "yes" : "no", layout.matching.objective, layout.angle_rsd);
       return total;

@@ -51,7 +51,7 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   std::size_t loop_conflicts = 0;
   for (const std::vector<EdgePair>& round : layout.loop_rounds) loop_conflicts += round.size();
   json["loop_conflicts"] = loop_conflicts;
-  json["rounds"] = layout.rounds;
+  json["rounds"] = layout.rounds();
   json["reused_rounds"] = layout.reused_rounds;
   json["solved_before"] = layout.solved_before;
   json["length_limit"] = g.length_limit;

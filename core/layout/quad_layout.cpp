@@ -116,7 +116,6 @@ void solve_p1(const matching::MatchingProblem& problem, double solve_seconds,
               QuadLayout& layout) {
   layout.matching =
       matching::solve_matching(problem, layout.solver, solve_seconds, progress, &cache.p1);
-  ++layout.rounds;
   clock.stage_done("P1");
 }
 
@@ -139,9 +138,8 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
   const std::pair<matching::SolverKind, double> key{solver, alpha};
   if (const auto known = cache.solved.find(key); known != cache.solved.end()) {
     layout.matching = known->second.matching;
-    layout.rounds = known->second.rounds;
     layout.loop_rounds = known->second.loop_rounds;
-    layout.reused_rounds = layout.rounds - 1;  // the failed rounds are in cache.failed
+    layout.reused_rounds = layout.rounds() - 1;  // the failed rounds are in cache.failed
     layout.solved_before = true;
     clock.stage_done("P1");
     if (lay_out_result) lay_out(charts, graph, cache, clock, layout);
@@ -184,7 +182,6 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
     QuadLayout next;
     next.alpha = alpha;
     next.solver = solver;
-    next.rounds = layout.rounds;
     next.reused_rounds = layout.reused_rounds + (laid_out ? 0 : 1);
     next.loop_rounds = layout.loop_rounds;
     next.loop_rounds.push_back(pairs);
@@ -195,7 +192,7 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
     laid_out = false;
   }
   if (repeatable && layout.matching.status == matching::SolveStatus::optimal)
-    cache.solved[key] = {layout.matching, layout.rounds, layout.loop_rounds};
+    cache.solved[key] = {layout.matching, layout.loop_rounds};
   if (!laid_out && lay_out_result) lay_out(charts, graph, cache, clock, layout);
   layout.seconds = std::move(seconds);
   return layout;

@@ -65,7 +65,8 @@ struct QuadLayout {
   // Pairs of chosen arcs closing loops (conflicts.h, loop_pairs()) that each failed round added to
   // P1, in the order of the rounds: round k + 2 solved P1 with loop_rounds[0..k] added.
   std::vector<std::vector<EdgePair>> loop_rounds;
-  int rounds = 0;  // solves of P1: the first and the loop rounds after it
+  // Solves of P1 that led to this layout: the first and its loop rounds.
+  int rounds() const { return static_cast<int>(loop_rounds.size()) + 1; }
   // Rounds whose matching had been laid out before (ResolveCache): no arcs, refinement or check.
   int reused_rounds = 0;
   // The rounds of P1 were run at this alpha before (ResolveCache::solved): none ran now.
@@ -76,7 +77,6 @@ struct QuadLayout {
 // What solve_layout() found at one alpha: the matching it returned and the rounds it took.
 struct SolvedAlpha {
   matching::MatchingResult matching;
-  int rounds = 0;
   std::vector<std::vector<EdgePair>> loop_rounds;
 };
 
