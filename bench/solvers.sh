@@ -132,7 +132,7 @@ solve_with_cbc() {
     *) status=$(grep -q '^Objective value' "$tmp/out" && echo feasible || echo time_limit) ;;
   esac
   row "cbc${1:+-cutoff}" "$status" "$(sed -n 's/^Objective value: *//p' "$tmp/out" | head -n 1)"
-  [ $# -eq 0 ] && cbc_status=$status
+  if [ $# -eq 0 ]; then cbc_status=$status; fi
 }
 
 # CBC with the exact solver's optimum as cutoff, where the exact solver proved one and CBC did not.

@@ -87,7 +87,8 @@ export class LayoutView {
     this.shown = { payload, result };
     if (!sameLayers) this.showLayers(result);
 
-    const verdict = layoutVerdict(result.info);    const line = this.part('layout-verdict');
+    const verdict = layoutVerdict(result.info);
+    const line = this.part('layout-verdict');
     line.textContent = verdict.text;
     line.dataset.valid = String(verdict.valid);
     const { figures, values } = layoutFigures(result);
