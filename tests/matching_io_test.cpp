@@ -149,6 +149,47 @@ TEST(MatchingIo, JsonErrorsNameThePlace) {
                     {"bad.json"});
 }
 
+TEST(MatchingIo, JsonKeysComeInAnyOrderAndUnknownOnesAreSkipped) {
+  const MatchingProblem p = read_instance_json(
+      bytes_of("{\"conflicts\": [[0, 1]], \"note\": {\"by\": [1, {\"x\": []}]}, "
+               "\"edges\": [[0, 1, 2.5], [1, 2, 1e-3]], \"virtual\": [2], \"nodes\": 3, "
+               "\"version\": 1, \"format\": \"tessera-p1\"}"),
+      "any.json", Limits());
+  ASSERT_EQ(p.node_count(), 3u);
+  EXPECT_EQ(p.is_virtual, (std::vector<std::uint8_t>{0, 0, 1}));
+  ASSERT_EQ(p.edges.size(), 2u);
+  EXPECT_EQ(p.edges[1].v, 2u);
+  EXPECT_EQ(p.edges[1].weight, 1e-3);
+  ASSERT_EQ(p.conflicts.size(), 1u);
+  EXPECT_EQ(p.conflicts[0].second, 1u);
+}
+
+TEST(MatchingIo, JsonItemsOfTheWrongShapeAreNamed) {
+  const std::string head = kJsonHead + "\"nodes\": 3, \"virtual\": [], ";
+  expect_json_error(head + "\"edges\": [[0, 1, 1], [0, [1], 1]], \"conflicts\": []}",
+                    {"edges[1]", "[u, v, weight]"});
+  expect_json_error(head + "\"edges\": [[0, 1, 1, 4]], \"conflicts\": []}",
+                    {"edges[0]", "[u, v, weight]"});
+  expect_json_error(head + "\"edges\": [[0, 1, \"1\"]], \"conflicts\": []}",
+                    {"edges[0]", "[u, v, weight]"});
+  expect_json_error(head + "\"edges\": [[0, -1, 1]], \"conflicts\": []}",
+                    {"edges[0]", "[u, v, weight]"});
+  expect_json_error(head + "\"edges\": [[0, 1, 1]], \"conflicts\": [0]}",
+                    {"conflicts[0]", "[e1, e2]"});
+  expect_json_error(head + "\"edges\": {}, \"conflicts\": []}", {"edges", "an array"});
+  expect_json_error(head + "\"edges\": [], \"edges\": [], \"conflicts\": []}", {"edges", "twice"});
+  expect_json_error(kJsonHead +
+                        "\"nodes\": 3, \"virtual\": [\"a\"], \"edges\": [], "
+                        "\"conflicts\": []}",
+                    {"virtual[0]", "node index"});
+  expect_json_error(kJsonHead +
+                        "\"nodes\": [3], \"virtual\": [], \"edges\": [], "
+                        "\"conflicts\": []}",
+                    {"nodes", "non-negative integer"});
+  expect_json_error(head + "\"edges\": []}", {"\"conflicts\" is missing"});
+  expect_json_error(head + "\"edges\": [[0, 1, 1]], \"conflicts\": []} []", {"bad.json:1:"});
+}
+
 TEST(MatchingIo, JsonLimitsAreCheckedBeforeAllocating) {
   Limits limits;
   limits.max_matching_nodes = 10;

@@ -1,7 +1,9 @@
 #include "matching/instance_json.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "base/error.h"
 #include "export/byte_writer.h"
@@ -60,40 +62,93 @@ std::size_t line_of_byte(std::span<const std::uint8_t> bytes, std::size_t byte) 
   return 1 + static_cast<std::size_t>(std::count(bytes.begin(), bytes.begin() + end, '\n'));
 }
 
+// Reads an instance while nlohmann's parser walks the text (its SAX interface): no document tree
+// is built. The tree took most of `tessera solve` on small instances (fandisk at alpha 1: about
+// 20 of 26 ms) and 750 MB for dragon's. The root object's keys may come in any order, so the
+// indices are checked against "nodes" and the edges once the object is read.
 class Reader {
  public:
-  Reader(const std::string& file_name, const Limits& limits)
-      : file_name_(file_name), limits_(limits) {}
+  Reader(std::span<const std::uint8_t> bytes, const std::string& file_name, const Limits& limits)
+      : bytes_(bytes), file_name_(file_name), limits_(limits) {}
 
-  MatchingProblem read(const Json& root) const {
-    if (!root.is_object()) fail("", "expected a JSON object {\"format\": \"tessera-p1\", ...}");
-    check_header(root);
+  MatchingProblem read() {
+    Json::sax_parse(bytes_.begin(), bytes_.end(), this);
+    if (!seen_format_) fail("", "the key \"format\" is missing");
+    if (!seen_version_) fail("", "the key \"version\" is missing");
+    if (!seen_nodes_) fail("", "the key \"nodes\" is missing");
+    for (const char* key : {"virtual", "edges", "conflicts"})
+      if (!seen_.contains(key)) fail("", std::string("the key \"") + key + "\" is missing");
     MatchingProblem problem;
-    problem.is_virtual.assign(node_count(root), 0);
-    read_virtual(member(root, "virtual"), problem);
-    read_edges(member(root, "edges"), problem);
-    read_conflicts(member(root, "conflicts"), problem);
+    problem.is_virtual.assign(nodes_, 0);
+    for (std::size_t i = 0; i < virtual_.size(); ++i)
+      problem.is_virtual[index(virtual_[i], nodes_, "virtual", i, "a node")] = 1;
+    problem.edges = std::move(edges_);
+    for (std::size_t e = 0; e < problem.edges.size(); ++e) {
+      index(problem.edges[e].u, nodes_, "edges", e, "a node");
+      index(problem.edges[e].v, nodes_, "edges", e, "a node");
+    }
+    problem.conflicts = std::move(conflicts_);
+    for (std::size_t k = 0; k < problem.conflicts.size(); ++k) {
+      index(problem.conflicts[k].first, problem.edges.size(), "conflicts", k, "an edge");
+      index(problem.conflicts[k].second, problem.edges.size(), "conflicts", k, "an edge");
+    }
     return problem;
   }
 
+  // nlohmann's SAX interface: each returns true to go on; errors throw.
+  bool null() { return scalar(Scalar{"null"}); }
+  bool boolean(bool value) { return scalar(Scalar{value ? "true" : "false"}); }
+  bool number_integer(std::int64_t value) {
+    return value < 0 ? scalar(Scalar{std::to_string(value), false, true, double(value)})
+                     : number_unsigned(static_cast<std::uint64_t>(value));
+  }
+  bool number_unsigned(std::uint64_t value) {
+    return scalar(Scalar{std::to_string(value), true, true, double(value), value});
+  }
+  bool number_float(double value, const std::string& text) {
+    return scalar(Scalar{text, false, true, value});
+  }
+  bool string(std::string& value) {
+    return scalar(Scalar{"\"" + value + "\"", false, false, 0.0, 0, &value});
+  }
+  bool binary(Json::binary_t&) { return scalar(Scalar{"binary data"}); }
+  bool key(std::string& name) {
+    if (depth_ == 1) key_ = name;
+    return true;
+  }
+  bool start_object(std::size_t) {
+    if (depth_ == 0) {
+      ++depth_;
+      return true;
+    }
+    return container();
+  }
+  bool start_array(std::size_t) {
+    if (depth_ == 0) fail("", "expected a JSON object {\"format\": \"tessera-p1\", ...}");
+    return container(true);
+  }
+  bool end_object() { return end(); }
+  bool end_array() { return end(); }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
+    throw ParseError(file_name_ + ":" + std::to_string(line_of_byte(bytes_, position)) +
+                     ": not valid JSON (" + e.what() + ")");
+  }
+
  private:
+  enum class List { none, virtual_ports, edges, conflicts };
+
+  // A JSON value that is neither an object nor an array.
+  struct Scalar {
+    std::string text;    // as it reads in a message
+    bool index = false;  // a non-negative integer
+    bool number = false;
+    double value = 0.0;
+    std::uint64_t unsigned_value = 0;
+    const std::string* string = nullptr;
+  };
+
   [[noreturn]] void fail(const std::string& where, const std::string& message) const {
     throw ParseError(file_name_ + ": " + (where.empty() ? "" : where + ": ") + message);
-  }
-
-  const Json& member(const Json& root, const char* key) const {
-    const auto it = root.find(key);
-    if (it == root.end()) fail("", std::string("the key \"") + key + "\" is missing");
-    return *it;
-  }
-
-  void check_header(const Json& root) const {
-    const Json& format = member(root, "format");
-    if (!format.is_string() || format.get<std::string>() != kFormat)
-      fail("format", std::string("expected \"") + kFormat + "\"; this is not a P1 instance");
-    const Json& version = member(root, "version");
-    if (!version.is_number_integer() || version.get<long long>() != kVersion)
-      fail("version", "only version 1 is known; was the file written by a newer Tessera?");
   }
 
   // "list[i]", made only for a message (an instance has hundreds of thousands of items).
@@ -102,69 +157,150 @@ class Reader {
   }
 
   // Item i of `list` holds `value`, an index below `bound`.
-  std::uint32_t index(const Json& value, std::size_t bound, const char* list, std::size_t i,
+  std::uint32_t index(std::uint64_t value, std::size_t bound, const char* list, std::size_t i,
                       const char* what) const {
-    if (!value.is_number_integer() || value.get<long long>() < 0 ||
-        static_cast<unsigned long long>(value.get<long long>()) >= bound)
+    if (value >= bound)
       fail(item_name(list, i), std::string("expected ") + what + " index in [0, " +
-                                   std::to_string(bound) + "), got " + value.dump());
-    return static_cast<std::uint32_t>(value.get<long long>());
+                                   std::to_string(bound) + "), got " + std::to_string(value));
+    return static_cast<std::uint32_t>(value);
   }
 
-  const Json& array(const Json& value, const std::string& where, std::size_t limit,
-                    const char* flag) const {
-    if (!value.is_array()) fail(where, "expected an array");
-    check_limit(value.size(), limit, file_name_ + " (" + where + ")", flag);
-    return value;
-  }
-
-  std::size_t node_count(const Json& root) const {
-    const Json& nodes = member(root, "nodes");
-    if (!nodes.is_number_integer() || nodes.get<long long>() < 0)
-      fail("nodes", "expected the number of nodes, a non-negative integer");
-    const auto n = static_cast<unsigned long long>(nodes.get<long long>());
-    check_limit(n, limits_.max_matching_nodes, file_name_ + " (nodes)", "--max-nodes");
-    return static_cast<std::size_t>(n);
-  }
-
-  void read_virtual(const Json& list, MatchingProblem& problem) const {
-    array(list, "virtual", limits_.max_matching_nodes, "--max-nodes");
-    for (std::size_t i = 0; i < list.size(); ++i)
-      problem.is_virtual[index(list[i], problem.node_count(), "virtual", i, "a node")] = 1;
-  }
-
-  void read_edges(const Json& list, MatchingProblem& problem) const {
-    array(list, "edges", limits_.max_matching_edges, "--max-edges");
-    problem.edges.reserve(list.size());
-    for (std::size_t e = 0; e < list.size(); ++e) {
-      const Json& item = list[e];
-      if (!item.is_array() || item.size() != 3 || !item[2].is_number())
-        fail(item_name("edges", e),
-             "expected [u, v, weight] with node indices u, v and a number weight");
-      MatchingEdge edge;
-      edge.u = index(item[0], problem.node_count(), "edges", e, "a node");
-      edge.v = index(item[1], problem.node_count(), "edges", e, "a node");
-      edge.weight = item[2].get<double>();
-      problem.edges.push_back(edge);
+  bool scalar(const Scalar& value) {
+    if (depth_ == 0) fail("", "expected a JSON object {\"format\": \"tessera-p1\", ...}");
+    if (depth_ == 1) return member(value);
+    if (skipped_ > 0) return true;
+    if (depth_ == 2 && list_ == List::virtual_ports) {
+      check_limit(virtual_.size() + 1, limits_.max_matching_nodes, file_name_ + " (virtual)",
+                  "--max-nodes");
+      if (!value.index)
+        fail(item_name("virtual", virtual_.size()), "expected a node index, got " + value.text);
+      virtual_.push_back(value.unsigned_value);
+      return true;
     }
+    if (depth_ != 3) item_shape_error(list_count());
+    if (item_.size() == item_length()) item_shape_error(list_count());
+    item_.push_back(value);
+    return true;
   }
 
-  void read_conflicts(const Json& list, MatchingProblem& problem) const {
-    array(list, "conflicts", limits_.max_matching_conflicts, "--max-conflicts");
-    problem.conflicts.reserve(list.size());
-    for (std::size_t k = 0; k < list.size(); ++k) {
-      const Json& item = list[k];
-      if (!item.is_array() || item.size() != 2)
-        fail(item_name("conflicts", k), "expected [e1, e2], two edge indices");
-      ConflictPair pair;
-      pair.first = index(item[0], problem.edges.size(), "conflicts", k, "an edge");
-      pair.second = index(item[1], problem.edges.size(), "conflicts", k, "an edge");
-      problem.conflicts.push_back(pair);
+  // A value of the root object.
+  bool member(const Scalar& value) {
+    if (key_ == "format") {
+      if (!value.string || *value.string != kFormat)
+        fail("format", std::string("expected \"") + kFormat + "\"; this is not a P1 instance");
+      seen_format_ = true;
+    } else if (key_ == "version") {
+      if (!value.index || value.unsigned_value != kVersion)
+        fail("version", "only version 1 is known; was the file written by a newer Tessera?");
+      seen_version_ = true;
+    } else if (key_ == "nodes") {
+      if (!value.index) fail("nodes", "expected the number of nodes, a non-negative integer");
+      check_limit(value.unsigned_value, limits_.max_matching_nodes, file_name_ + " (nodes)",
+                  "--max-nodes");
+      nodes_ = static_cast<std::size_t>(value.unsigned_value);
+      seen_nodes_ = true;
+    } else if (key_ == "virtual" || key_ == "edges" || key_ == "conflicts") {
+      fail(key_, "expected an array");
     }
+    return true;
   }
 
+  // An object or array opens below the root.
+  bool container(bool array = false) {
+    ++depth_;
+    if (skipped_ > 0 || (depth_ == 2 && !array)) {
+      if (depth_ == 2) member_container();
+      ++skipped_;
+      return true;
+    }
+    if (depth_ == 2) return list_start();
+    if (depth_ == 3 && array && (list_ == List::edges || list_ == List::conflicts)) {
+      const bool edges = list_ == List::edges;
+      check_limit(list_count() + 1,
+                  edges ? limits_.max_matching_edges : limits_.max_matching_conflicts,
+                  file_name_ + (edges ? " (edges)" : " (conflicts)"),
+                  edges ? "--max-edges" : "--max-conflicts");
+      item_.clear();
+      return true;
+    }
+    item_shape_error(list_count());
+  }
+
+  // An object as a member of the root: one of the lists is not an array; others are skipped.
+  void member_container() {
+    if (key_ == "virtual" || key_ == "edges" || key_ == "conflicts")
+      fail(key_, "expected an array");
+    if (key_ == "format" || key_ == "version" || key_ == "nodes") member(Scalar{"an object"});
+  }
+
+  bool list_start() {
+    if (key_ == "format" || key_ == "version" || key_ == "nodes") {
+      member(Scalar{"an array"});
+    }
+    if (!seen_.insert(key_).second && (key_ == "virtual" || key_ == "edges" || key_ == "conflicts"))
+      fail(key_, "the key appears twice");
+    list_ = key_ == "virtual"     ? List::virtual_ports
+            : key_ == "edges"     ? List::edges
+            : key_ == "conflicts" ? List::conflicts
+                                  : List::none;
+    if (list_ == List::none) skipped_ = 1;
+    return true;
+  }
+
+  bool end() {
+    --depth_;
+    if (skipped_ > 0) {
+      --skipped_;
+      return true;
+    }
+    if (depth_ == 2) finish_item();
+    if (depth_ == 1) list_ = List::none;
+    return true;
+  }
+
+  std::size_t item_length() const { return list_ == List::edges ? 3 : 2; }
+  std::size_t list_count() const {
+    return list_ == List::edges ? edges_.size() : conflicts_.size();
+  }
+
+  [[noreturn]] void item_shape_error(std::size_t i) const {
+    if (list_ == List::edges)
+      fail(item_name("edges", i),
+           "expected [u, v, weight] with node indices u, v and a number weight");
+    if (list_ == List::conflicts)
+      fail(item_name("conflicts", i), "expected [e1, e2], two edge indices");
+    fail(item_name("virtual", virtual_.size()), "expected a node index");
+  }
+
+  void finish_item() {
+    const std::size_t i = list_count();
+    const auto is_index = [](const Scalar& s) { return s.index && s.unsigned_value <= UINT32_MAX; };
+    if (item_.size() != item_length() || !is_index(item_[0]) || !is_index(item_[1]))
+      item_shape_error(i);
+    const auto u = static_cast<std::uint32_t>(item_[0].unsigned_value);
+    const auto v = static_cast<std::uint32_t>(item_[1].unsigned_value);
+    if (list_ == List::conflicts) {
+      conflicts_.push_back({u, v});
+      return;
+    }
+    if (!item_[2].number) item_shape_error(i);
+    edges_.push_back({u, v, item_[2].value});
+  }
+
+  std::span<const std::uint8_t> bytes_;
   const std::string& file_name_;
   const Limits& limits_;
+  int depth_ = 0;
+  int skipped_ = 0;  // depth inside a value the reader does not use
+  std::string key_;  // the root's key whose value is read
+  List list_ = List::none;
+  std::vector<Scalar> item_;
+  std::set<std::string> seen_;
+  bool seen_format_ = false, seen_version_ = false, seen_nodes_ = false;
+  std::size_t nodes_ = 0;
+  std::vector<std::uint64_t> virtual_;
+  std::vector<MatchingEdge> edges_;
+  std::vector<ConflictPair> conflicts_;
 };
 
 }  // namespace
@@ -185,16 +321,7 @@ std::vector<std::uint8_t> write_instance_json(const MatchingProblem& problem) {
 MatchingProblem read_instance_json(std::span<const std::uint8_t> bytes,
                                    const std::string& file_name, const Limits& limits) {
   check_limit(bytes.size(), limits.max_file_bytes, file_name + " (bytes)", "--max-file-bytes");
-  Json root;
-  try {
-    root = Json::parse(bytes.begin(), bytes.end());
-  } catch (const Json::parse_error& e) {
-    throw ParseError(file_name + ":" + std::to_string(line_of_byte(bytes, e.byte)) +
-                     ": not valid JSON (" + e.what() + ")");
-  } catch (const Json::exception& e) {  // e.g. a number out of the range of a double
-    throw ParseError(file_name + ": not a readable JSON instance (" + e.what() + ")");
-  }
-  MatchingProblem problem = Reader(file_name, limits).read(root);
+  MatchingProblem problem = Reader(bytes, file_name, limits).read();
   validate_problem(problem, limits, file_name);
   return problem;
 }
