@@ -1,5 +1,6 @@
 #include "matching/lp_relaxation.h"
 
+#define GLP_UNDOC  // glp_gmi_gen(): GLPK 5.0 exports it; its manual leaves it out
 #include <glpk.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@ namespace {
 
 constexpr double kFractional = 1e-6;    // x in (eps, 1 - eps) is fractional
 constexpr double kCutTolerance = 1e-6;  // a row violated by less is not added
+constexpr double kGomorySlack = 1e-7;   // a Gomory row's right-hand side, loosened by this much
 
 void add_row(glp_prob* lp, const std::vector<int>& columns, int type, double bound) {
   const int row = glp_add_rows(lp, 1);
@@ -55,6 +57,7 @@ LpRelaxation::LpRelaxation(const MatchingProblem& problem, const Adjacency& inci
   for (std::size_t e = 0; e < problem.edges.size(); ++e) {
     glp_set_col_bnds(lp, static_cast<int>(e) + 1, GLP_DB, 0.0, 1.0);
     glp_set_obj_coef(lp, static_cast<int>(e) + 1, problem.edges[e].weight);
+    glp_set_col_kind(lp, static_cast<int>(e) + 1, GLP_IV);  // for add_gomory_cuts()
   }
   for (std::uint32_t v = 0; v < problem.node_count(); ++v)  // (5.2)
     add_row(lp, columns_of(incident.of(v)), problem.is_virtual[v] ? GLP_UP : GLP_FX, 1.0);
@@ -126,11 +129,15 @@ void LpRelaxation::drop_slack_rows() {
   int kept = 0;
   std::vector<int> index(glp_get_num_cols(lp) + 1);
   for (int i = 1; i <= rows; ++i) {
-    const double slack = glp_get_row_ub(lp, i) - glp_get_row_prim(lp, i);
+    const bool gomory = glp_get_row_type(lp, i) == GLP_LO;
+    const double slack = gomory ? glp_get_row_prim(lp, i) - glp_get_row_lb(lp, i)
+                                : glp_get_row_ub(lp, i) - glp_get_row_prim(lp, i);
     if (i < first_cut || glp_get_row_stat(lp, i) != GLP_BS || slack <= kCutTolerance) {
       new_number[static_cast<std::size_t>(i)] = ++kept;
       continue;
     }
+    dropped.push_back(i);
+    if (gomory) continue;  // dense, and derived once at the root: not kept in the pool
     PooledRow row;
     row.bound = glp_get_row_ub(lp, i);
     row.clique = is_clique[static_cast<std::size_t>(i)] != 0;
@@ -138,7 +145,6 @@ void LpRelaxation::drop_slack_rows() {
     for (int k = 1; k <= length; ++k) row.edges.push_back(static_cast<std::uint32_t>(index[k] - 1));
     std::sort(row.edges.begin(), row.edges.end());
     pool_.push_back(std::move(row));
-    dropped.push_back(i);
   }
   if (dropped.size() == 1) return;
   glp_del_rows(lp, static_cast<int>(dropped.size()) - 1, dropped.data());
@@ -231,6 +237,23 @@ std::size_t LpRelaxation::add_violated_odd_sets() {
     ++added;
   }
   return added;
+}
+
+std::size_t LpRelaxation::add_gomory_cuts(int max_cuts) {
+  glp_prob* lp = lp_.get();
+  if (!glp_bf_exists(lp) && glp_factorize(lp) != 0) return 0;
+  std::unique_ptr<glp_prob, Deleter> cuts(glp_create_prob());
+  glp_add_cols(cuts.get(), glp_get_num_cols(lp));
+  const int made = glp_gmi_gen(lp, cuts.get(), max_cuts);
+  std::vector<int> index(static_cast<std::size_t>(glp_get_num_cols(lp)) + 1);
+  std::vector<double> value(index.size());
+  for (int i = 1; i <= made; ++i) {
+    const int length = glp_get_mat_row(cuts.get(), i, index.data(), value.data());
+    const int row = glp_add_rows(lp, 1);
+    glp_set_row_bnds(lp, row, GLP_LO, glp_get_row_lb(cuts.get(), i) - kGomorySlack, 0.0);
+    glp_set_mat_row(lp, row, length, index.data(), value.data());
+  }
+  return static_cast<std::size_t>(made);
 }
 
 LpBasis LpRelaxation::basis() const {

@@ -61,6 +61,12 @@ class LpRelaxation {
   // Call between solves, before any basis() is kept.
   void drop_slack_rows();
 
+  // Gomory mixed-integer cuts (Gomory 1960) of the current optimal basis, at most `max_cuts`,
+  // made by GLPK's glp_gmi_gen() and added as rows (dense ones; drop_slack_rows() deletes those
+  // that go slack instead of pooling them). Valid for every 0/1 point of the current rows and
+  // bounds: call at the root only. Returns how many.
+  std::size_t add_gomory_cuts(int max_cuts);
+
   LpBasis basis() const;
   void restore(const LpBasis& basis);
 
