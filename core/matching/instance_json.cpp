@@ -73,10 +73,7 @@ class Reader {
 
   MatchingProblem read() {
     Json::sax_parse(bytes_.begin(), bytes_.end(), this);
-    if (!seen_format_) fail("", "the key \"format\" is missing");
-    if (!seen_version_) fail("", "the key \"version\" is missing");
-    if (!seen_nodes_) fail("", "the key \"nodes\" is missing");
-    for (const char* key : {"virtual", "edges", "conflicts"})
+    for (const char* key : {"format", "version", "nodes", "virtual", "edges", "conflicts"})
       if (!seen_.contains(key)) fail("", std::string("the key \"") + key + "\" is missing");
     MatchingProblem problem;
     problem.is_virtual.assign(nodes_, 0);
@@ -96,24 +93,23 @@ class Reader {
   }
 
   // nlohmann's SAX interface: each returns true to go on; errors throw.
-  bool null() { return scalar(Scalar{"null"}); }
-  bool boolean(bool value) { return scalar(Scalar{value ? "true" : "false"}); }
+  bool null() { return scalar(Scalar{}); }
+  bool boolean(bool) { return scalar(Scalar{}); }
   bool number_integer(std::int64_t value) {
-    return value < 0 ? scalar(Scalar{std::to_string(value), false, true, double(value)})
+    return value < 0 ? scalar(Scalar{false, true, double(value)})
                      : number_unsigned(static_cast<std::uint64_t>(value));
   }
   bool number_unsigned(std::uint64_t value) {
-    return scalar(Scalar{std::to_string(value), true, true, double(value), value});
+    return scalar(Scalar{true, true, double(value), value});
   }
-  bool number_float(double value, const std::string& text) {
-    return scalar(Scalar{text, false, true, value});
-  }
-  bool string(std::string& value) {
-    return scalar(Scalar{"\"" + value + "\"", false, false, 0.0, 0, &value});
-  }
-  bool binary(Json::binary_t&) { return scalar(Scalar{"binary data"}); }
+  bool number_float(double value, const std::string&) { return scalar(Scalar{false, true, value}); }
+  bool string(std::string& value) { return scalar(Scalar{false, false, 0.0, 0, &value}); }
+  bool binary(Json::binary_t&) { return scalar(Scalar{}); }
   bool key(std::string& name) {
-    if (depth_ == 1) key_ = name;
+    if (depth_ != 1) return true;
+    key_ = name;
+    if (!seen_.insert(key_).second && list_of(key_) != List::none)
+      fail(key_, "the key appears twice");
     return true;
   }
   bool start_object(std::size_t) {
@@ -139,7 +135,6 @@ class Reader {
 
   // A JSON value that is neither an object nor an array.
   struct Scalar {
-    std::string text;    // as it reads in a message
     bool index = false;  // a non-negative integer
     bool number = false;
     double value = 0.0;
@@ -172,8 +167,7 @@ class Reader {
     if (depth_ == 2 && list_ == List::virtual_ports) {
       check_limit(virtual_.size() + 1, limits_.max_matching_nodes, file_name_ + " (virtual)",
                   "--max-nodes");
-      if (!value.index)
-        fail(item_name("virtual", virtual_.size()), "expected a node index, got " + value.text);
+      if (!value.index) fail(item_name("virtual", virtual_.size()), "expected a node index");
       virtual_.push_back(value.unsigned_value);
       return true;
     }
@@ -188,18 +182,15 @@ class Reader {
     if (key_ == "format") {
       if (!value.string || *value.string != kFormat)
         fail("format", std::string("expected \"") + kFormat + "\"; this is not a P1 instance");
-      seen_format_ = true;
     } else if (key_ == "version") {
       if (!value.index || value.unsigned_value != kVersion)
         fail("version", "only version 1 is known; was the file written by a newer Tessera?");
-      seen_version_ = true;
     } else if (key_ == "nodes") {
       if (!value.index) fail("nodes", "expected the number of nodes, a non-negative integer");
       check_limit(value.unsigned_value, limits_.max_matching_nodes, file_name_ + " (nodes)",
                   "--max-nodes");
       nodes_ = static_cast<std::size_t>(value.unsigned_value);
-      seen_nodes_ = true;
-    } else if (key_ == "virtual" || key_ == "edges" || key_ == "conflicts") {
+    } else if (list_of(key_) != List::none) {
       fail(key_, "expected an array");
     }
     return true;
@@ -226,25 +217,26 @@ class Reader {
     item_shape_error(list_count());
   }
 
-  // An object as a member of the root: one of the lists is not an array; others are skipped.
+  // An object as a member of the root: wrong for the keys the reader knows, skipped otherwise.
   void member_container() {
-    if (key_ == "virtual" || key_ == "edges" || key_ == "conflicts")
-      fail(key_, "expected an array");
-    if (key_ == "format" || key_ == "version" || key_ == "nodes") member(Scalar{"an object"});
+    if (list_of(key_) != List::none) fail(key_, "expected an array");
+    member(Scalar{});
   }
 
   bool list_start() {
-    if (key_ == "format" || key_ == "version" || key_ == "nodes") {
-      member(Scalar{"an array"});
+    list_ = list_of(key_);
+    if (list_ == List::none) {
+      member(Scalar{});  // a header key holding an array fails there
+      skipped_ = 1;
     }
-    if (!seen_.insert(key_).second && (key_ == "virtual" || key_ == "edges" || key_ == "conflicts"))
-      fail(key_, "the key appears twice");
-    list_ = key_ == "virtual"     ? List::virtual_ports
-            : key_ == "edges"     ? List::edges
-            : key_ == "conflicts" ? List::conflicts
-                                  : List::none;
-    if (list_ == List::none) skipped_ = 1;
     return true;
+  }
+
+  static List list_of(const std::string& key) {
+    return key == "virtual"     ? List::virtual_ports
+           : key == "edges"     ? List::edges
+           : key == "conflicts" ? List::conflicts
+                                : List::none;
   }
 
   bool end() {
@@ -295,8 +287,7 @@ class Reader {
   std::string key_;  // the root's key whose value is read
   List list_ = List::none;
   std::vector<Scalar> item_;
-  std::set<std::string> seen_;
-  bool seen_format_ = false, seen_version_ = false, seen_nodes_ = false;
+  std::set<std::string> seen_;  // the root's keys
   std::size_t nodes_ = 0;
   std::vector<std::uint64_t> virtual_;
   std::vector<MatchingEdge> edges_;
