@@ -82,9 +82,12 @@ layout::LayoutOptions layout_options(const ParsedArgs& parsed) {
   return options;
 }
 
-// Why P1 has no solution, when G has no perfect matching: the ports none covers, and the folded
-// singular rings that leave singularities with fewer ports than their valence.
+// Why P1 has no solution: its time ran out before a matching was found, or G has no perfect
+// matching (the ports none covers, and the folded singular rings that leave singularities with
+// fewer ports than their valence).
 std::string no_matching_text(const nlohmann::ordered_json& json) {
+  if (json["matching_status"] == "time_limit" && json["objective"].is_null())
+    return "  P1 found no matching within its time: raise --max-solve-seconds\n";
   const auto list = [](const nlohmann::ordered_json& items) {
     std::string text;
     for (std::size_t k = 0; k < items.size() && k < 12; ++k)

@@ -73,5 +73,14 @@ TEST(CliLayout, BadOptionsExitWithTwo) {
   EXPECT_NE(limited.out.find("--max-trace-steps"), std::string::npos) << limited.out;
 }
 
+// A P1 stopped by its time before any matching: the text says so and names the option to raise.
+TEST(CliLayout, NoMatchingWithinTheSolveTimeIsExplained) {
+  const std::string path = write_temp_file("part.obj", write_obj(mechanical_part(3)));
+  const auto result = run_cli("layout " + quoted(path) + " --alpha 0 --max-solve-seconds 1e-9");
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("P1 time_limit, objective null"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("raise --max-solve-seconds"), std::string::npos) << result.out;
+}
+
 }  // namespace
 }  // namespace tessera
