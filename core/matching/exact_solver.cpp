@@ -241,10 +241,10 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
   if (mode.search_neighbourhood && problem.edges.size() >= kGomoryEdges &&
       lp.add_gomory_cuts(kGomoryCuts) > 0) {
     // Dragon at alpha 0 (62,967 edges): the root bound went from 7794.07 to 7798.96, and the
-    // search proved the optimum, 7803.94, after 2,759 s and 1,607 nodes; without the cuts no run
-    // had closed the gap (the longest, 1,400 s: 7804.60 over 7802.14). Below this size the dense
-    // rows cost more than they save: on fertility's slider (1,670 edges) the largest re-solve
-    // went from 268 ms to 592 ms.
+    // search proved the optimum, 7803.94, after 1,607 nodes (2,309 s on the 2-core machine);
+    // without the cuts no run had closed the gap (the longest, 1,400 s: 7804.60 over 7802.14).
+    // Below this size the dense rows cost more than they save: on fertility's slider (1,670 edges)
+    // the largest re-solve went from 268 ms to 592 ms.
     const LpStatus strengthened =
         lp.solve_with_cuts(root.exclusion, kInfinity, seconds_left(), kRootCutRounds);
     if (strengthened == LpStatus::infeasible) return infeasible();
