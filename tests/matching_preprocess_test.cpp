@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include "matching/adjacency.h"
 #include "matching/check.h"
@@ -43,6 +44,18 @@ TEST(MatchingProbing, FixesEdgesThatBlockAPort) {
   EXPECT_EQ(probing.edges[2], Fixed::zero);
   // With edge 2 gone, port 5 keeps edges 4 and 5 and nothing is forced.
   EXPECT_EQ(std::count(probing.edges.begin(), probing.edges.end(), Fixed::one), 0);
+}
+
+TEST(MatchingProbing, ADeadlinePassedStopsItBeforeTheTries) {
+  const Indexed x(blocking_instance());
+  const Probing stopped =
+      probe(x.problem, x.incident, x.exclusive, std::chrono::steady_clock::now());
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_FALSE(stopped.infeasible);
+  EXPECT_EQ(stopped.edges[2], Fixed::free);  // the try that fixes it never came
+  const Probing whole = probe(x.problem, x.incident, x.exclusive);
+  EXPECT_FALSE(whole.stopped);
+  EXPECT_EQ(whole.edges[2], Fixed::zero);
 }
 
 TEST(MatchingProbing, ASingleEdgeIsForcedAndExcludesItsNeighbours) {

@@ -3,6 +3,7 @@
 // optimum, and every matching passes the independent checker.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -253,6 +254,34 @@ TEST(MatchingExact, ACacheReSolvesNewWeightsAsAFreshSolveDoes) {
   MatchingProblem other = base;
   other.conflicts.pop_back();
   EXPECT_EQ(cache.structure_for(other), nullptr);
+}
+
+// A cache filled after its deadline keeps its components without roots (probing stopped): a
+// solve with time makes them, with extra pairs first and then without, as a fresh solve does.
+TEST(MatchingExact, ACacheFilledOutOfTimeSolvesAsAFreshSolveDoes) {
+  const MatchingProblem base = synthetic_layout_instance(layout_spec(11, 8.0, 5.0));
+  ExactSolverCache cache;
+  const std::vector<ComponentStructure>* parts =
+      cache.structure_for(base, std::chrono::steady_clock::now());
+  ASSERT_NE(parts, nullptr);
+  for (const ComponentStructure& part : *parts) EXPECT_FALSE(part.root.has_value());
+  const MatchingResult first = solve_matching(base, SolverKind::exact, 60.0);
+  ASSERT_EQ(first.status, SolveStatus::optimal);
+  MatchingProblem more = base;
+  for (std::size_t k = 1; k < first.edges.size(); k += 2)
+    more.conflicts.push_back({first.edges[k - 1], first.edges[k]});
+  const auto expect_as_fresh = [&cache](const MatchingProblem& p) {
+    const MatchingResult fresh = solve_matching(p, SolverKind::exact, 60.0);
+    const MatchingResult cached = solve_matching(p, SolverKind::exact, 60.0, Progress(), &cache);
+    ASSERT_EQ(cached.status, fresh.status);
+    if (fresh.has_solution())
+      EXPECT_NEAR(cached.objective, fresh.objective, 1e-9 * fresh.objective);
+  };
+  expect_as_fresh(more);
+  expect_as_fresh(base);
+  // The base problem's solve made the roots it needed in the cache.
+  EXPECT_TRUE(std::any_of(parts->begin(), parts->end(),
+                          [](const ComponentStructure& part) { return part.root.has_value(); }));
 }
 
 TEST(MatchingExact, ACacheSkipsExtraPairsAcrossComponents) {

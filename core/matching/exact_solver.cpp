@@ -165,10 +165,13 @@ ComponentStructure::Root make_root(const ComponentStructure& part, const Adjacen
   return root;
 }
 
-void ensure_root(ComponentStructure& part) {
+// The root of `part`, unless probing runs out of time (then solve_component() makes it).
+void ensure_root(ComponentStructure& part, Clock::time_point deadline) {
   if (part.root) return;
   const Adjacency exclusive = exclusive_edges(part.component.problem);
-  part.root = make_root(part, exclusive, probe(part.component.problem, part.incident, exclusive));
+  Probing probing = probe(part.component.problem, part.incident, exclusive, deadline);
+  if (probing.stopped && !probing.infeasible) return;
+  part.root = make_root(part, exclusive, std::move(probing));
 }
 
 // Conflict pairs (local edge indices) added to a component with its root.
@@ -182,8 +185,8 @@ void add_pairs(ComponentStructure& part, const std::vector<ConflictPair>& extra)
     both_orders.emplace_back(c.second, c.first);
   }
   part.conflicts = with_pairs(part.conflicts, both_orders);
+  if (!part.root || part.root->probing.infeasible) return;
   ComponentStructure::Root& root = *part.root;
-  if (root.probing.infeasible) return;
   root.exclusion = with_pairs(root.exclusion, both_orders);
   for (const ConflictPair& c : extra)
     root.cliques.push_back({std::min(c.first, c.second), std::max(c.first, c.second)});
@@ -217,7 +220,8 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
 
   if (!part.root) {
     const Adjacency exclusive = exclusive_edges(problem);
-    Probing probing = probe(problem, part.incident, exclusive);
+    Probing probing = probe(problem, part.incident, exclusive, deadline);
+    // A probing the deadline stopped is left unkept (part.root): the next solve probes afresh.
     if (!probing.infeasible && Clock::now() >= deadline) return stopped_at_root(cover_bound);
     part.root = make_root(part, exclusive, std::move(probing));
   }
@@ -338,14 +342,15 @@ Incumbent complete_integral_part(const MatchingProblem& problem, const Adjacency
   return found;
 }
 
-std::vector<ComponentStructure>* ExactSolverCache::structure_for(const MatchingProblem& problem) {
+std::vector<ComponentStructure>* ExactSolverCache::structure_for(const MatchingProblem& problem,
+                                                                 Clock::time_point deadline) {
   if (!filled_) {
     graph_ = problem;
     components_ = prepare(problem);
     // The roots with the rest: they read no weight either, and made lazily they fell to the first
     // solve whose cover has conflicts, often the slider's first move (fandisk: the layout at
     // alpha 5 has a conflict-free cover, and alpha 0 then took 27.7 ms instead of 11.1).
-    for (ComponentStructure& part : components_) ensure_root(part);
+    for (ComponentStructure& part : components_) ensure_root(part, deadline);
     component_of_edge_.resize(problem.edges.size());
     local_edge_.resize(problem.edges.size());
     for (std::uint32_t c = 0; c < components_.size(); ++c)
@@ -375,7 +380,8 @@ MatchingResult solve_exact(const MatchingProblem& problem, double time_limit,
   const Clock::time_point start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(std::min(time_limit, 1e9)));
-  std::vector<ComponentStructure>* cached = cache ? cache->structure_for(problem) : nullptr;
+  std::vector<ComponentStructure>* cached =
+      cache ? cache->structure_for(problem, deadline) : nullptr;
   std::vector<ComponentStructure> fresh;
   if (!cached) fresh = prepare(problem);
   return solve_all(problem, cached ? *cached : fresh, start, SolveMode{{deadline}}, progress);

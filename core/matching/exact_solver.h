@@ -22,6 +22,7 @@
 // weights change) starts at step 3. The results are the same with or without it.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -48,7 +49,9 @@ struct ComponentStructure {
     Adjacency exclusion;  // exclusive pairs with the implied exclusions of probing
     std::vector<Clique> cliques;
   };
-  std::optional<Root> root;  // made with the cache, or by a solve without one that needs it
+  // Made with the cache, or by a solve that needs it and finds none (one without the cache, or
+  // after the cache's probing ran out of time).
+  std::optional<Root> root;
   // Per edge: in a pair added to the cached graph's (ExactSolverCache); the search prefers to
   // branch on these (branch_and_bound.h). Empty when none was added.
   std::vector<std::uint8_t> preferred;
@@ -61,8 +64,11 @@ struct ComponentStructure {
 // clique. Any other problem is solved without it (and leaves it as it is).
 class ExactSolverCache {
  public:
-  // The preprocessing for `problem`, or null if the cache holds another graph.
-  std::vector<ComponentStructure>* structure_for(const MatchingProblem& problem);
+  // The preprocessing for `problem`, or null if the cache holds another graph. A component whose
+  // probing `deadline` stops is kept without its root.
+  std::vector<ComponentStructure>* structure_for(const MatchingProblem& problem,
+                                                 std::chrono::steady_clock::time_point deadline =
+                                                     std::chrono::steady_clock::time_point::max());
 
  private:
   MatchingProblem graph_;  // the nodes, edges and conflicts it was made for (weights unused)
