@@ -165,7 +165,7 @@ ComponentStructure::Root make_root(const ComponentStructure& part, const Adjacen
   return root;
 }
 
-// The root of `part`, unless probing runs out of time (then solve_component() makes it).
+// The root of `part`, unless the deadline stops probing (then the next solve with time makes it).
 void ensure_root(ComponentStructure& part, Clock::time_point deadline) {
   if (part.root) return;
   const Adjacency exclusive = exclusive_edges(part.component.problem);
@@ -218,13 +218,8 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
     return optimal(problem, unconstrained.edges);
   const double cover_bound = objective_of(problem, unconstrained.edges);
 
-  if (!part.root) {
-    const Adjacency exclusive = exclusive_edges(problem);
-    Probing probing = probe(problem, part.incident, exclusive, deadline);
-    // A probing the deadline stopped is left unkept (part.root): the next solve probes afresh.
-    if (!probing.infeasible && Clock::now() >= deadline) return stopped_at_root(cover_bound);
-    part.root = make_root(part, exclusive, std::move(probing));
-  }
+  ensure_root(part, deadline);
+  if (!part.root) return stopped_at_root(cover_bound);
   const ComponentStructure::Root& root = *part.root;
   if (root.probing.infeasible) return infeasible();
   if (Clock::now() >= deadline) return stopped_at_root(cover_bound);
