@@ -24,7 +24,9 @@
 # objective (plus 1e-7 relative) as its cutoff, for up to --confirm seconds (default 600; 0: not
 # at all): CBC then looks only for solutions at least as good, finds one itself and proves that
 # none is better, or finds none. Its answer counts in the agreement (column "cbc cutoff"), not in
-# the speed-ups: the cutoff is a hint that the other solvers do not get.
+# the speed-ups: the cutoff is a hint that the other solvers do not get. Likewise, where the
+# exact solver proved an optimum and none of GLPK's runs (glpk, glpk-tuned, glpsol) finished,
+# glpk-tuned runs once more for up to --confirm seconds, without a hint (column "glpk long").
 # glpsol or cbc missing: that column is skipped with a message (scripts/setup.sh installs both).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -40,7 +42,7 @@ while [ $# -gt 0 ]; do
     --time-limit) limit=$2; shift 2 ;;
     --confirm) confirm=$2; shift 2 ;;
     --meshes) meshes=$2; shift 2 ;;
-    --help|-h) sed -n 2,26p "$0"; exit 0 ;;
+    --help|-h) sed -n 2,28p "$0"; exit 0 ;;
     *) dir=$1; shift ;;
   esac
 done
@@ -99,13 +101,21 @@ json_field() { sed -n "s/^  \"$1\": \"\{0,1\}\([^\",]*\)\"\{0,1\},\{0,1\}$/\1/p"
 # row solver status objective [solve-seconds]
 row() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$group" "$name" "$edges" "$conflicts" "$1" "$2" "$3" "$cpu" "$wall" "${4:-}" >> "$tsv"; }
 
+# Sets glpk_finished when a run of GLPK (its status $1) proved an optimum or infeasibility.
+note_glpk() { [ "$1" = optimal ] || [ "$1" = infeasible ] && glpk_finished=yes; }
+
+# solve_with_tessera solver [row time-limit]: the row of `tessera solve --solver solver`, named
+# after the solver and with --time-limit unless given.
 solve_with_tessera() {
-  timed "$tessera" solve "$json" --solver "$1" --time-limit "$limit" --json
+  timed "$tessera" solve "$json" --solver "$1" --time-limit "${3:-$limit}" --json
   edges=$(sed -n 's/^    "edges": \([0-9]*\),\{0,1\}$/\1/p' "$tmp/out")
   conflicts=$(sed -n 's/^    "conflicts": \([0-9]*\)$/\1/p' "$tmp/out")
   local status; status=$(json_field status)
-  row "$1" "${status:-error}" "$(json_field objective)" "$(json_field seconds)"
-  [ "$1" = exact ] && exact_status=$status && exact_objective=$(json_field objective)
+  row "${2:-$1}" "${status:-error}" "$(json_field objective)" "$(json_field seconds)"
+  case $1 in
+    exact) exact_status=$status && exact_objective=$(json_field objective) ;;
+    glpk*) note_glpk "$status" ;;
+  esac
 }
 
 solve_with_glpsol() {
@@ -118,6 +128,7 @@ solve_with_glpsol() {
     *) status=time_limit ;;
   esac
   row glpsol "$status" "$(sed -n 's/^Objective: *[^=]*= *\([-0-9.e+]*\).*/\1/p' "$tmp/glpsol.txt" 2>/dev/null)"
+  note_glpk "$status"
 }
 
 # solve_with_cbc [cutoff]: the row "cbc", or with a cutoff (and the --confirm time) "cbc-cutoff".
@@ -141,6 +152,13 @@ confirm_with_cbc() {
   solve_with_cbc "$(awk -v x="$exact_objective" 'BEGIN { printf "%.12g", x + 1e-7 * (1 + (x < 0 ? -x : x)) }')"
 }
 
+# glpk-tuned for up to --confirm seconds, where the exact solver proved an optimum and no run of
+# GLPK finished.
+confirm_with_glpk() {
+  [ "$confirm" != 0 ] && [ "$exact_status" = optimal ] && [ -z "$glpk_finished" ] || return 0
+  solve_with_tessera glpk-tuned glpk-long "$confirm"
+}
+
 if [ -z "$dir" ]; then
   dir=$root/build/bench-p1
   rm -rf "$dir"
@@ -156,10 +174,11 @@ for lp in "$dir"/*.lp "$dir"/*/*.lp; do
   group=$(basename "$(dirname "$lp")")
   json=${lp%.lp}.json
   [ -f "$json" ] || json=$lp
-  edges=""; conflicts=""; exact_status=""; cbc_status=""
+  edges=""; conflicts=""; exact_status=""; cbc_status=""; glpk_finished=""
   for solver in exact glpk glpk-tuned; do solve_with_tessera "$solver"; done
   for tool in "${tools[@]}"; do "solve_with_$tool"; done
   [[ " ${tools[*]} " == *" cbc "* ]] && confirm_with_cbc
+  confirm_with_glpk
   echo "solvers.sh: $name done" >&2
 done
 node "$root/bench/solvers_table.mjs" "$tsv" "$limit"

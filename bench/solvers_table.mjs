@@ -1,8 +1,10 @@
 // The table of bench/solvers.sh: per instance the CPU seconds of every solver, whether their
 // answers agree, and the exact solver's speed-up; then the median ratios per set of instances, by
 // process CPU seconds and, between the solvers of tessera solve, by the seconds of the solve alone.
-// CBC's confirmation runs (solver "cbc-cutoff", given the exact optimum as cutoff) count in the
-// agreement and have a column of their own, not a ratio.
+// The confirmation runs (solver "cbc-cutoff", CBC given the exact optimum as cutoff, and
+// "glpk-long", glpk-tuned given more time) count in the agreement and have columns of their own,
+// not ratios. Column "confirmed" names the solvers besides exact that finished with the same
+// answer: GLPK (any of its runs) and CBC (with the cutoff or without).
 //   node bench/solvers_table.mjs <solvers.tsv> <time-limit>
 import { readFileSync } from 'node:fs';
 
@@ -50,9 +52,14 @@ const median = (xs) => {
 
 // The solvers of tessera solve, whose rows carry the seconds of the solve alone.
 const inProcess = compared.filter((s) => rows.some((r) => r.solver === s && Number.isFinite(r.solve)));
-const confirming = rows.some((r) => r.solver === 'cbc-cutoff');
+const confirmations = ['cbc-cutoff', 'glpk-long'].filter((s) => rows.some((r) => r.solver === s));
 const confirmation = (r) => (!r ? '-' : finished(r) ? r.cpu.toFixed(3) : 'unfinished');
-const header = ['instance', '|E|', '|I|', 'answer', ...solvers, ...(confirming ? ['cbc cutoff'] : []), 'agree',
+const families = { GLPK: ['glpk', 'glpk-tuned', 'glpsol', 'glpk-long'], CBC: ['cbc', 'cbc-cutoff'] };
+// The families with a finished run, given that the answers agree.
+const confirmedBy = (results) => Object.keys(families)
+  .filter((f) => results.some((r) => families[f].includes(r.solver) && finished(r)));
+const header = ['instance', '|E|', '|I|', 'answer', ...solvers,
+  ...confirmations.map((s) => s.replace('-', ' ')), 'agree', 'confirmed',
   ...compared.map((s) => `${s}/exact`), ...inProcess.map((s) => `${s}/exact solve`)];
 const table = [header];
 const measured = [];  // per instance: its set, size and ratios
@@ -62,9 +69,10 @@ for (const key of instances) {
   const by = Object.fromEntries(results.map((r) => [r.solver, r]));
   const agree = agreement(results);
   disagreements += agree ? 0 : 1;
+  const confirmed = agree && finished(by.exact) ? confirmedBy(results) : [];
   const cells = [key, by.exact.edges, by.exact.conflicts, answer(results),
-    ...solvers.map((s) => time(by[s])), ...(confirming ? [confirmation(by['cbc-cutoff'])] : []),
-    agree ? 'yes' : 'NO'];
+    ...solvers.map((s) => time(by[s])), ...confirmations.map((s) => confirmation(by[s])),
+    agree ? 'yes' : 'NO', confirmed.join('+') || '-'];
   const ratios = {};
   for (const s of compared) {
     const r = ratio(by[s], by.exact, 'cpu');
@@ -76,7 +84,7 @@ for (const key of instances) {
     ratios[s].solve = r.value;
     cells.push(r.text);
   }
-  measured.push({ set: by.exact.set, edges: by.exact.edges, ratios });
+  measured.push({ set: by.exact.set, edges: by.exact.edges, ratios, confirmed });
   table.push(cells);
 }
 const widths = header.map((_, i) => Math.max(...table.map((row) => String(row[i]).length)));
@@ -98,9 +106,14 @@ for (const set of sets) summary(`${set} instances`, measured.filter((m) => m.set
 for (const set of sets)
   summary(`${set} instances with |E| >= 1000`, measured.filter((m) => m.set === set && m.edges >= 1000));
 summary('all instances', measured);
-const confirmed = rows.filter((r) => r.solver === 'cbc-cutoff');
-if (confirmed.length > 0)
-  console.log(`CBC with the exact optimum as cutoff, where CBC alone did not finish: ` +
-    `${confirmed.filter(finished).length} of ${confirmed.length} finished`);
+const finishedOf = (solver, text) => {
+  const runs = rows.filter((r) => r.solver === solver);
+  if (runs.length > 0) console.log(`${text}: ${runs.filter(finished).length} of ${runs.length} finished`);
+};
+finishedOf('cbc-cutoff', 'CBC with the exact optimum as cutoff, where CBC alone did not finish');
+finishedOf('glpk-long', 'glpk-tuned with more time, where no run of GLPK finished');
+const by = (f) => measured.filter((m) => m.confirmed.includes(f)).length;
+console.log(`answers confirmed by GLPK on ${by('GLPK')}, by CBC on ${by('CBC')}, by both on ` +
+  `${measured.filter((m) => m.confirmed.length === 2).length} of ${measured.length} instances`);
 console.log(`${instances.length} instances, ${disagreements} with disagreeing answers`);
 process.exitCode = disagreements ? 1 : 0;
