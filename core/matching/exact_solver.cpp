@@ -342,10 +342,6 @@ std::vector<ComponentStructure>* ExactSolverCache::structure_for(const MatchingP
   if (!filled_) {
     graph_ = problem;
     components_ = prepare(problem);
-    // The roots with the rest: they read no weight either, and made lazily they fell to the first
-    // solve whose cover has conflicts, often the slider's first move (fandisk: the layout at
-    // alpha 5 has a conflict-free cover, and alpha 0 then took 27.7 ms instead of 11.1).
-    for (ComponentStructure& part : components_) ensure_root(part, deadline);
     component_of_edge_.resize(problem.edges.size());
     local_edge_.resize(problem.edges.size());
     for (std::uint32_t c = 0; c < components_.size(); ++c)
@@ -356,6 +352,12 @@ std::vector<ComponentStructure>* ExactSolverCache::structure_for(const MatchingP
     filled_ = true;
   }
   if (!same_graph_up_to_extra_pairs(graph_, problem)) return nullptr;
+  // The roots with the rest: they read no weight either, and made lazily they fell to the first
+  // solve whose cover has conflicts, often the slider's first move (fandisk: the layout at
+  // alpha 5 has a conflict-free cover, and alpha 0 then took 27.7 ms instead of 11.1). Those the
+  // deadline left out are made by the next call with time, before any pairs are added, so that
+  // every later call keeps them.
+  for (ComponentStructure& part : components_) ensure_root(part, deadline);
   if (problem.conflicts.size() == graph_.conflicts.size()) return &components_;
   std::vector<std::vector<ConflictPair>> extra(components_.size());
   for (std::size_t k = graph_.conflicts.size(); k < problem.conflicts.size(); ++k) {

@@ -49,8 +49,8 @@ struct ComponentStructure {
     Adjacency exclusion;  // exclusive pairs with the implied exclusions of probing
     std::vector<Clique> cliques;
   };
-  // Made with the cache, or by a solve that needs it and finds none (one without the cache, or
-  // after the cache's probing ran out of time).
+  // Made with the cache (by its first call whose probing the deadline does not stop), or by a
+  // solve without the cache that needs it.
   std::optional<Root> root;
   // Per edge: in a pair added to the cached graph's (ExactSolverCache); the search prefers to
   // branch on these (branch_and_bound.h). Empty when none was added.
@@ -65,7 +65,7 @@ struct ComponentStructure {
 class ExactSolverCache {
  public:
   // The preprocessing for `problem`, or null if the cache holds another graph. A component whose
-  // probing `deadline` stops is kept without its root.
+  // probing `deadline` stops is kept without its root until a call with time makes it.
   std::vector<ComponentStructure>* structure_for(const MatchingProblem& problem,
                                                  std::chrono::steady_clock::time_point deadline =
                                                      std::chrono::steady_clock::time_point::max());
