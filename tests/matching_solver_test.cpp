@@ -12,9 +12,11 @@
 #include "matching/adjacency.h"
 #include "matching/blossom.h"
 #include "matching/check.h"
+#include "matching/cliques.h"
 #include "matching/components.h"
 #include "matching/exact_solver.h"
 #include "matching/generate.h"
+#include "matching/lp_relaxation.h"
 #include "matching/random.h"
 #include "matching/solver.h"
 
@@ -376,6 +378,41 @@ TEST(MatchingNeighbourhood, AnIntegralPointIsItsOwnCompletion) {
   EXPECT_FALSE(complete_integral_part(p, conflicts, std::vector<double>(p.edges.size(), 0.5), fixed,
                                       generous_limits())
                    .found);
+}
+
+// Below a cutoff at or above the optimum, the part left by reduced-cost fixing holds the optimum
+// and proves it; below a cutoff under the optimum it proves nothing, and a complete search of it
+// finds nothing that cheap. Against brute force, with the LP of the conflict cliques solved once.
+TEST(MatchingNeighbourhood, BelowACutoffTheOptimumIsFoundAndProvenOnlyIfItIsThatCheap) {
+  int proven = 0, refuted = 0;
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    const MatchingProblem p = tiny_instance(seed);
+    const double optimum = brute_force_optimum(p);
+    if (std::isinf(optimum)) continue;
+    const Adjacency conflicts = conflicting_edges(p);
+    LpRelaxation lp(p, incident_edges(p), conflict_cliques(p));
+    ASSERT_EQ(lp.solve_with_cuts(exclusive_edges(p), kInfinity, 10.0, 0), LpStatus::optimal);
+    const LpOptimum root{lp.values(), lp.reduced_costs(), lp.objective()};
+    const std::vector<Fixed> fixed(p.edges.size(), Fixed::free);
+    for (const double cutoff : {lp.objective(), optimum - 0.5, optimum, optimum + 3.0}) {
+      const NeighbourhoodSearch below =
+          solve_below_cutoff(p, conflicts, root, cutoff, fixed, generous_limits());
+      const std::string what = "seed " + std::to_string(seed) + " cutoff " + std::to_string(cutoff);
+      ASSERT_TRUE(below.complete) << what;
+      if (below.best.found) EXPECT_TRUE(check_solution(p, below.best.edges).feasible) << what;
+      if (optimum <= cutoff) {
+        ASSERT_TRUE(below.proven) << what;
+        EXPECT_NEAR(below.best.objective, optimum, 1e-9 * std::max(1.0, std::abs(optimum))) << what;
+        ++proven;
+      } else {
+        EXPECT_FALSE(below.proven) << what;
+        if (below.best.found) EXPECT_GT(below.best.objective, cutoff) << what;
+        ++refuted;
+      }
+    }
+  }
+  EXPECT_GT(proven, 100);
+  EXPECT_GT(refuted, 100);
 }
 
 // A path 0-1-2-3 with a chord 0-2 and a parallel edge 2-3: keeping edge 0-1 leaves nodes 2, 3

@@ -7,6 +7,7 @@
 
 #include "matching/blossom.h"
 #include "matching/branch_and_bound.h"
+#include "matching/check.h"
 #include "matching/cliques.h"
 #include "matching/components.h"
 #include "matching/incumbent.h"
@@ -22,8 +23,10 @@ using Clock = std::chrono::steady_clock;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kRootCutRounds = 30;
 constexpr int kRepairRounds = 6;
-constexpr std::uint64_t kNeighbourhoodNodes = 200;  // complete_integral_part()'s search at roots
-constexpr double kIntegral = 1e-6;                  // an LP value this close to 0 or 1 is integral
+constexpr std::uint64_t kNeighbourhoodNodes = 200;  // the searches of the roots' neighbourhoods
+// The optimistic cutoff of a root, above its LP bound by this fraction (solve_below_cutoff()).
+constexpr double kOptimisticGap = 2e-4;
+constexpr double kIntegral = 1e-6;  // an LP value this close to 0 or 1 is integral
 // One round of Gomory cuts at the root of a component this large (solve_component()).
 constexpr std::size_t kGomoryEdges = 10'000;
 constexpr int kGomoryCuts = 2'000;
@@ -88,7 +91,7 @@ std::vector<std::uint32_t> order_by_relaxation(const LpRelaxation& lp) {
   return order;
 }
 
-MatchingResult from_search(const SearchResult& search, double root_bound) {
+MatchingResult from_search(const SearchResult& search, double proven_bound) {
   MatchingResult r;
   r.nodes = search.nodes;
   if (search.complete) {
@@ -98,7 +101,7 @@ MatchingResult from_search(const SearchResult& search, double root_bound) {
     r.objective = r.lower_bound = search.best.objective;
     return r;
   }
-  r.lower_bound = std::max(search.lower_bound, root_bound);
+  r.lower_bound = std::max(search.lower_bound, proven_bound);
   if (search.best.found) {
     r.status = SolveStatus::feasible;
     r.edges = search.best.edges;
@@ -202,6 +205,28 @@ struct SolveMode {
 MatchingResult solve_all(const MatchingProblem& problem, std::vector<ComponentStructure>& parts,
                          Clock::time_point start, const SolveMode& mode, const Progress& progress);
 
+// What a root learns below its optimistic cutoff, kOptimisticGap above its LP bound (step 6 in
+// exact_solver.h), tried when its incumbent costs more: the search of solve_below_cutoff(), and
+// the lower bound, the cutoff if that search is complete but not proven.
+struct BelowCutoff {
+  NeighbourhoodSearch search;
+  double bound;
+};
+
+BelowCutoff search_below_optimistic_cutoff(const ComponentStructure& part, const LpRelaxation& lp,
+                                           const Incumbent& start, double root_bound,
+                                           Clock::time_point deadline) {
+  BelowCutoff below{{}, root_bound};
+  const double cutoff = lp.objective() + kOptimisticGap * std::max(1.0, std::abs(lp.objective()));
+  if (start.found && start.objective <= cutoff) return below;
+  below.search = solve_below_cutoff(part.component.problem, part.conflicts,
+                                    {lp.values(), lp.reduced_costs(), lp.objective()}, cutoff,
+                                    part.root->probing.edges, {deadline, kNeighbourhoodNodes});
+  if (below.search.complete && !below.search.proven)  // no matching costs `cutoff` or less
+    below.bound = std::max(root_bound, cutoff - bound_tolerance(cutoff));
+  return below;
+}
+
 MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
                                const Progress& progress) {
   const Clock::time_point deadline = mode.limits.deadline;
@@ -264,11 +289,26 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
       start = std::move(completed);
   }
   if (!start.found) start = heuristics.dive(order_by_relaxation(lp));
+  const BelowCutoff below = mode.search_neighbourhood ? search_below_optimistic_cutoff(
+                                                            part, lp, start, root_bound, deadline)
+                                                      : BelowCutoff{{}, root_bound};
+  if (below.search.proven) {
+    MatchingResult r = optimal(problem, below.search.best.edges);
+    r.nodes = below.search.nodes;
+    return r;
+  }
+  if (below.search.best.found) {
+    Incumbent found = below.search.best;
+    heuristics.improve(found);
+    if (!start.found || found.objective < start.objective) start = std::move(found);
+  }
   lp.drop_slack_rows();
   const SearchResult search =
       branch_and_bound(problem, lp, root.exclusion, root.probing.edges, part.preferred, heuristics,
                        std::move(start), root_bound, mode.limits, progress);
-  return from_search(search, root_bound);
+  MatchingResult r = from_search(search, below.bound);
+  r.nodes += below.search.nodes;
+  return r;
 }
 
 void add_component(const Component& component, const MatchingResult& part, MatchingResult& total) {
@@ -312,6 +352,29 @@ MatchingResult solve_all(const MatchingProblem& problem, std::vector<ComponentSt
   return total;
 }
 
+// The best matching that holds `kept` and otherwise only `allowed` edges, by the exact solver on
+// the part of P1 that `kept` leaves open (open_part()).
+NeighbourhoodSearch search_neighbourhood(const MatchingProblem& problem, const Adjacency& conflicts,
+                                         std::vector<std::uint32_t> kept,
+                                         const std::vector<std::uint8_t>& allowed,
+                                         const SearchLimits& limits) {
+  const Component open = open_part(problem, conflicts, kept, allowed);
+  std::vector<ComponentStructure> parts = prepare(open.problem);
+  const MatchingResult rest =
+      solve_all(open.problem, parts, Clock::now(), SolveMode{limits, false}, Progress());
+  NeighbourhoodSearch search;
+  search.nodes = rest.nodes;
+  search.complete = rest.status == SolveStatus::optimal || rest.status == SolveStatus::infeasible;
+  if (!rest.has_solution()) return search;
+  search.best.edges = std::move(kept);
+  for (std::uint32_t e : rest.edges) search.best.edges.push_back(open.edge_of[e]);
+  std::sort(search.best.edges.begin(), search.best.edges.end());
+  const SolutionCheck check = check_solution(problem, search.best.edges);
+  search.best.found = check.feasible;  // kept edges in conflict: no matching here
+  search.best.objective = check.objective;
+  return search;
+}
+
 }  // namespace
 
 Incumbent complete_integral_part(const MatchingProblem& problem, const Adjacency& conflicts,
@@ -323,18 +386,26 @@ Incumbent complete_integral_part(const MatchingProblem& problem, const Adjacency
   if (kept.empty()) return {};
   std::vector<std::uint8_t> allowed(fixed.size());
   for (std::size_t e = 0; e < fixed.size(); ++e) allowed[e] = fixed[e] != Fixed::zero;
-  const Component open = open_part(problem, conflicts, kept, allowed);
-  std::vector<ComponentStructure> parts = prepare(open.problem);
-  const MatchingResult rest =
-      solve_all(open.problem, parts, Clock::now(), SolveMode{limits, false}, Progress());
-  if (!rest.has_solution()) return {};
-  Incumbent found;
-  found.found = true;
-  found.edges = std::move(kept);
-  for (std::uint32_t e : rest.edges) found.edges.push_back(open.edge_of[e]);
-  std::sort(found.edges.begin(), found.edges.end());
-  found.objective = objective_of(problem, found.edges);
-  return found;
+  return search_neighbourhood(problem, conflicts, std::move(kept), allowed, limits).best;
+}
+
+NeighbourhoodSearch solve_below_cutoff(const MatchingProblem& problem, const Adjacency& conflicts,
+                                       const LpOptimum& lp, double cutoff,
+                                       const std::vector<Fixed>& fixed,
+                                       const SearchLimits& limits) {
+  const double slack = cutoff - lp.objective;
+  std::vector<std::uint32_t> kept;
+  std::vector<std::uint8_t> allowed(fixed.size());
+  for (std::uint32_t e = 0; e < fixed.size(); ++e) {
+    const bool out = fixed[e] == Fixed::zero || (lp.x[e] < kIntegral && lp.d[e] > slack);
+    const bool in = fixed[e] == Fixed::one || (lp.x[e] > 1.0 - kIntegral && -lp.d[e] > slack);
+    allowed[e] = !out;
+    if (in && !out) kept.push_back(e);
+  }
+  NeighbourhoodSearch search =
+      search_neighbourhood(problem, conflicts, std::move(kept), allowed, limits);
+  search.proven = search.complete && search.best.found && search.best.objective <= cutoff;
+  return search;
 }
 
 std::vector<ComponentStructure>* ExactSolverCache::structure_for(const MatchingProblem& problem,
