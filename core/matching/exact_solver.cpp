@@ -205,20 +205,20 @@ struct SolveMode {
 MatchingResult solve_all(const MatchingProblem& problem, std::vector<ComponentStructure>& parts,
                          Clock::time_point start, const SolveMode& mode, const Progress& progress);
 
-// What a root learns below its optimistic cutoff, kOptimisticGap above its LP bound (step 6 in
-// exact_solver.h), tried when its incumbent costs more: the search of solve_below_cutoff(), and
-// the lower bound, the cutoff if that search is complete but not proven.
+// What a root learns below its cutoff (step 6 in exact_solver.h): the incumbent's cost, or the LP
+// bound plus kOptimisticGap if that is less. The search of solve_below_cutoff(), and the lower
+// bound: the cutoff if that search is complete but not proven.
 struct BelowCutoff {
   NeighbourhoodSearch search;
   double bound;
 };
 
-BelowCutoff search_below_optimistic_cutoff(const ComponentStructure& part, const LpRelaxation& lp,
-                                           const Incumbent& start, double root_bound,
-                                           Clock::time_point deadline) {
+BelowCutoff search_below_cutoff(const ComponentStructure& part, const LpRelaxation& lp,
+                                const Incumbent& start, double root_bound,
+                                Clock::time_point deadline) {
   BelowCutoff below{{}, root_bound};
-  const double cutoff = lp.objective() + kOptimisticGap * std::max(1.0, std::abs(lp.objective()));
-  if (start.found && start.objective <= cutoff) return below;
+  double cutoff = lp.objective() + kOptimisticGap * std::max(1.0, std::abs(lp.objective()));
+  if (start.found) cutoff = std::min(cutoff, start.objective);
   below.search = solve_below_cutoff(part.component.problem, part.conflicts,
                                     {lp.values(), lp.reduced_costs(), lp.objective()}, cutoff,
                                     part.root->probing.edges, {deadline, kNeighbourhoodNodes});
@@ -289,9 +289,9 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
       start = std::move(completed);
   }
   if (!start.found) start = heuristics.dive(order_by_relaxation(lp));
-  const BelowCutoff below = mode.search_neighbourhood ? search_below_optimistic_cutoff(
-                                                            part, lp, start, root_bound, deadline)
-                                                      : BelowCutoff{{}, root_bound};
+  const BelowCutoff below = mode.search_neighbourhood
+                                ? search_below_cutoff(part, lp, start, root_bound, deadline)
+                                : BelowCutoff{{}, root_bound};
   if (below.search.proven) {
     MatchingResult r = optimal(problem, below.search.best.edges);
     r.nodes = below.search.nodes;

@@ -13,9 +13,10 @@
 //     (incumbent.h) only when neither finds one. On fertility's 41 slider positions the dive was
 //     never better than both, yet took 5 to 16 ms of every root that went on to a search; without
 //     it the same trees, P1 summed 1,383 -> 1,104 ms (bunny 801 -> 705, rocker-arm 350 -> 307).
-//     If it costs more than the LP bound plus 0.02 %, the part of P1 that holds every matching
-//     that cheap is solved exactly (solve_below_cutoff()): an optimum within that cutoff is P1's,
-//     and no search follows; otherwise the part's best may still be a better incumbent.
+//     Then the part of P1 that holds every matching no dearer than it, or than the LP bound plus
+//     0.02 % if that is less, is solved exactly within a node limit (solve_below_cutoff()): an
+//     optimum within that cutoff is P1's, and no search follows; otherwise the part's best may
+//     still be a better incumbent.
 //  7. LP-based branch-and-bound with reduced-cost fixing closes the gap (branch_and_bound.h).
 // Deterministic: the same instance gives the same matching, whatever the machine, unless the time
 // limit stops it.
