@@ -117,8 +117,9 @@ struct NeighbourhoodSearch {
 // that is P1's optimum (`proven`); if its search is complete and finds nothing that cheap, no
 // matching costs `cutoff` or less. On dragon at alpha 1 (62,967 edges, 5.3 M conflict pairs) the
 // root's bound is 1.06 below the optimum (0.011 %) but its incumbent 38.9 above: the part below
-// the cutoff has 12,240 free edges, its search (111 nodes) proves the optimum, and P1 takes 20.3 s
-// instead of 54.0 s (138 nodes).
+// the cutoff has 12,240 free edges, its search (111 nodes) proves the optimum, and P1 took 22.4 s
+// instead of 49.1 s (138 nodes of the search). At alpha 5 the incumbent is within the 0.02 %: the
+// part below its cost proved it in 30.4 s instead of 62.6 s; alpha 20, 14.0 s instead of 16.4 s.
 NeighbourhoodSearch solve_below_cutoff(const MatchingProblem& problem, const Adjacency& conflicts,
                                        const LpOptimum& lp, double cutoff,
                                        const std::vector<Fixed>& fixed, const SearchLimits& limits);
