@@ -139,6 +139,8 @@ TEST(MatchingIncumbent, DivingFollowsTheOrderAndImproves) {
   std::vector<std::uint32_t> planted(20);
   for (std::uint32_t e = 0; e < 20; ++e) planted[e] = e;
   EXPECT_LE(found.objective, objective_of(x.problem, planted));  // local search only improves
+  const auto passed = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  EXPECT_FALSE(search.dive(order, passed).found);  // a dive past its deadline gives nothing
 }
 
 }  // namespace

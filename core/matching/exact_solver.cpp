@@ -288,7 +288,7 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
     if (completed.found && (!start.found || completed.objective < start.objective))
       start = std::move(completed);
   }
-  if (!start.found) start = heuristics.dive(order_by_relaxation(lp));
+  if (!start.found) start = heuristics.dive(order_by_relaxation(lp), deadline);
   const BelowCutoff below = mode.search_neighbourhood
                                 ? search_below_cutoff(part, lp, start, root_bound, deadline)
                                 : BelowCutoff{{}, root_bound};

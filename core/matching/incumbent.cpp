@@ -50,7 +50,8 @@ bool IncumbentSearch::covers_every_port(const std::vector<Fixed>& values) const 
   return deficient_ports(problem_, usable).empty();
 }
 
-Incumbent IncumbentSearch::dive(const std::vector<std::uint32_t>& order) const {
+Incumbent IncumbentSearch::dive(const std::vector<std::uint32_t>& order,
+                                std::chrono::steady_clock::time_point deadline) const {
   struct Decision {
     std::size_t position;  // in `order`, of the edge set to 1
     Propagation::State before;
@@ -60,6 +61,7 @@ Incumbent IncumbentSearch::dive(const std::vector<std::uint32_t>& order) const {
   int backtracks = 0;
   std::size_t position = 0;
   for (;;) {
+    if (std::chrono::steady_clock::now() >= deadline) return {};
     if (propagation.infeasible()) {
       // Both values of some edge fail: undo the last decision and take its other value.
       if (decisions.empty() || backtracks++ == kDiveBacktracks) return {};
