@@ -213,9 +213,9 @@ struct BelowCutoff {
   double bound;
 };
 
-BelowCutoff search_below_cutoff(const ComponentStructure& part, const LpRelaxation& lp,
-                                const Incumbent& start, double root_bound,
-                                Clock::time_point deadline) {
+BelowCutoff below_root_cutoff(const ComponentStructure& part, const LpRelaxation& lp,
+                              const Incumbent& start, double root_bound,
+                              Clock::time_point deadline) {
   BelowCutoff below{{}, root_bound};
   double cutoff = lp.objective() + kOptimisticGap * std::max(1.0, std::abs(lp.objective()));
   if (start.found) cutoff = std::min(cutoff, start.objective);
@@ -289,18 +289,18 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
       start = std::move(completed);
   }
   if (!start.found) start = heuristics.dive(order_by_relaxation(lp), deadline);
-  const BelowCutoff below = mode.search_neighbourhood
-                                ? search_below_cutoff(part, lp, start, root_bound, deadline)
-                                : BelowCutoff{{}, root_bound};
+  BelowCutoff below = mode.search_neighbourhood
+                          ? below_root_cutoff(part, lp, start, root_bound, deadline)
+                          : BelowCutoff{{}, root_bound};
   if (below.search.proven) {
     MatchingResult r = optimal(problem, below.search.best.edges);
     r.nodes = below.search.nodes;
     return r;
   }
   if (below.search.best.found) {
-    Incumbent found = below.search.best;
-    heuristics.improve(found);
-    if (!start.found || found.objective < start.objective) start = std::move(found);
+    heuristics.improve(below.search.best);
+    if (!start.found || below.search.best.objective < start.objective)
+      start = std::move(below.search.best);
   }
   lp.drop_slack_rows();
   const SearchResult search =
