@@ -16,6 +16,7 @@ int regmap_command(const Args& args);
 int field_command(const Args& args);
 int param_command(const Args& args);
 int solve_command(const Args& args);
+int reduce_command(const Args& args);
 int layout_command(const Args& args);
 
 }  // namespace tessera::cli

@@ -24,6 +24,7 @@ constexpr Command kCommands[] = {
     {"field", tessera::cli::field_command, "a cross field: singularities, Poincare-Hopf check"},
     {"param", tessera::cli::param_command, "seamless Poisson parameterization (uv per corner)"},
     {"solve", tessera::cli::solve_command, "program P1: the conflict-free min-weight matching"},
+    {"reduce", tessera::cli::reduce_command, "program P1 without the edges a bound rules out"},
     {"layout", tessera::cli::layout_command, "quad layout by a perfect matching of the ports"},
 };
 

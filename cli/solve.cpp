@@ -1,5 +1,7 @@
 // tessera solve <instance> [--solver exact|glpk|glpk-tuned] [--time-limit S] [--json]: program P1
-// (thesis Ch. 5) from an instance file, by one of the solvers.
+// (thesis Ch. 5) from an instance file, by one of the solvers. tessera reduce <instance> --below C
+// --output F: the same instance without the edges that no matching of cost <= C can use, by a
+// checked LP bound (matching/dual_bound.h), for second solvers to confirm an optimum on.
 #include <unistd.h>
 
 #include <cmath>
@@ -7,7 +9,11 @@
 
 #include "base/limits.h"
 #include "commands.h"
+#include "export/write_mesh.h"
+#include "matching/dual_bound.h"
 #include "matching/instance_file.h"
+#include "matching/instance_json.h"
+#include "matching/instance_lp.h"
 #include "matching/result_json.h"
 #include "matching/solver.h"
 #include "usage.h"
@@ -37,6 +43,25 @@ void print_solve_help() {
       "                    40000000)\n\n"
       "An infeasible instance is an answer (exit code 0). Exit codes: 0 ok, 1 internal error,\n"
       "2 bad input (the message says what and where).\n");
+}
+
+void print_reduce_help() {
+  std::printf(
+      "usage: tessera reduce <instance.json|instance.lp> --below COST --output OUT.lp|OUT.json\n"
+      "                      [--time-limit S]\n\n"
+      "Writes program P1 without the edges that no matching of cost COST or less can use: the\n"
+      "dual of its LP relaxation (degree, clique and odd-set rows), checked row by row against\n"
+      "the instance, bounds every matching's cost by its reduced costs (reduced-cost fixing).\n"
+      "The instance written has every matching of cost <= COST, so its optimum is the\n"
+      "instance's whenever that costs no more than COST: a solver too slow for the whole\n"
+      "instance can confirm an optimum on it.\n\n"
+      "  --below COST      the cost (e.g. a claimed optimum, a little above it for rounding)\n"
+      "  --output F        the instance left, as CPLEX LP (.lp) or compact JSON (.json)\n"
+      "  --time-limit S    seconds for the LP and its cut rounds (default 600); stopped early, "
+      "the\n"
+      "                    bound is weaker and still checked\n"
+      "  --max-file-bytes N, --max-nodes N, --max-edges N, --max-conflicts N\n"
+      "                    as for 'tessera solve'\n");
 }
 
 Limits limits_from(const ParsedArgs& parsed) {
@@ -104,6 +129,41 @@ int solve_command(const Args& args) {
   } else {
     print_text(path, problem, solver, result);
   }
+  return 0;
+}
+
+int reduce_command(const Args& args) {
+  const ParsedArgs parsed = parse_args(args,
+                                       {"--below", "--output", "--time-limit", "--max-file-bytes",
+                                        "--max-nodes", "--max-edges", "--max-conflicts"},
+                                       {"--help", "-h"}, "reduce");
+  if (parsed.has("--help") || parsed.has("-h")) {
+    print_reduce_help();
+    return 0;
+  }
+  if (parsed.positional.size() != 1 || !parsed.has("--below") || !parsed.has("--output"))
+    throw UsageError(
+        "'tessera reduce' takes one instance file, --below COST and --output FILE; run "
+        "'tessera reduce --help'");
+  const std::string output = parsed.value("--output");
+  const bool as_lp = output.ends_with(".lp");
+  if (!as_lp && !output.ends_with(".json"))
+    throw UsageError("--output names a .lp or a .json file, got '" + output + "'");
+  const double cost = parsed.number("--below", 0.0);
+  const double time_limit = parsed.number("--time-limit", 600.0);
+  if (time_limit <= 0) throw UsageError("--time-limit expects a positive number of seconds");
+  const std::string& path = parsed.positional[0];
+  const matching::MatchingProblem problem = matching::read_instance_file(path, limits_from(parsed));
+  const matching::Reduction reduction = matching::reduce_below(problem, cost, time_limit);
+  const matching::MatchingProblem& left = reduction.part.problem;
+  write_file_bytes(output,
+                   as_lp ? matching::write_instance_lp(left) : matching::write_instance_json(left));
+  std::printf(
+      "%s: checked lower bound %s; below %s, %zu of %zu edges and %zu of %zu conflict pairs are "
+      "left, in %s\n",
+      path.c_str(), number_text(reduction.bound.bound).c_str(), number_text(cost).c_str(),
+      left.edges.size(), problem.edges.size(), left.conflicts.size(), problem.conflicts.size(),
+      output.c_str());
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include "cli_run.h"
 #include "export/writers.h"
 #include "matching/generate.h"
+#include "matching/instance_file.h"
 #include "matching/instance_json.h"
 #include "matching/instance_lp.h"
 #include "mesh/shapes.h"
@@ -83,6 +84,36 @@ TEST(CliSolve, BadInputAndUsageExitWithTwo) {
   EXPECT_EQ(run_cli("solve").exit_code, 2);
   EXPECT_EQ(run_cli("solve /no/such/file.json").exit_code, 2);
   EXPECT_EQ(run_cli("solve --help").exit_code, 0);
+}
+
+// Below the optimum (and a little above it, for rounding), the instance left has fewer edges and
+// the same optimum, for every solver.
+TEST(CliReduce, WritesTheInstanceLeftBelowACostWithTheSameOptimum) {
+  const std::string json = write_temp_file("full.json", write_instance_json(instance()));
+  const double optimum = solve_json("'" + json + "'")["objective"].get<double>();
+  char below[40];
+  std::snprintf(below, sizeof below, "%.17g", optimum + 1e-7);
+  for (const std::string name : {"left.lp", "left.json"}) {
+    const std::string left = temp_path(name);
+    const auto r = run_cli("reduce '" + json + "' --below " + below + " --output '" + left + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find("checked lower bound"), std::string::npos) << r.out;
+    EXPECT_LT(read_instance_file(left, Limits()).edges.size(), instance().edges.size()) << name;
+    for (const std::string solver : {"exact", "glpk"}) {
+      const nlohmann::json again = solve_json("--solver " + solver + " '" + left + "'");
+      EXPECT_EQ(again["status"], "optimal") << name << " " << solver;
+      EXPECT_NEAR(again["objective"].get<double>(), optimum, 1e-9) << name << " " << solver;
+    }
+  }
+  // Below less than the optimum, what is left has no matching that cheap.
+  std::snprintf(below, sizeof below, "%.17g", optimum - 1.0);
+  const std::string none = temp_path("none.json");
+  ASSERT_EQ(
+      run_cli("reduce '" + json + "' --below " + below + " --output '" + none + "'").exit_code, 0);
+  const nlohmann::json left = solve_json("'" + none + "'");
+  if (left["status"] != "infeasible") EXPECT_GT(left["objective"].get<double>(), optimum - 1.0);
+  for (const std::string bad : {"--below 3", "--below x --output a.lp", "--below 3 --output a.txt"})
+    EXPECT_EQ(run_cli("reduce '" + json + "' " + bad, true).exit_code, 2) << bad;
 }
 
 TEST(CliLayout, ExportsTheP1InstanceItSolves) {

@@ -14,6 +14,7 @@
 #include "matching/check.h"
 #include "matching/cliques.h"
 #include "matching/components.h"
+#include "matching/dual_bound.h"
 #include "matching/exact_solver.h"
 #include "matching/generate.h"
 #include "matching/lp_relaxation.h"
@@ -25,18 +26,31 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The optimum by enumerating every subset of edges (m <= 20), or only those that hold edge `kept`.
-double brute_force_optimum(const MatchingProblem& p, std::optional<std::uint32_t> kept = {}) {
-  double best = kInfinity;
+struct Matching {
+  std::vector<std::uint32_t> edges;
+  double cost = 0.0;
+};
+
+// Every matching without conflicts, by enumerating every subset of edges (m <= 20).
+std::vector<Matching> feasible_matchings(const MatchingProblem& p) {
+  std::vector<Matching> matchings;
   const std::uint32_t m = static_cast<std::uint32_t>(p.edges.size());
   for (std::uint32_t subset = 0; subset < (1u << m); ++subset) {
-    if (kept && !(subset & (1u << *kept))) continue;
     std::vector<std::uint32_t> edges;
     for (std::uint32_t e = 0; e < m; ++e)
       if (subset & (1u << e)) edges.push_back(e);
     const SolutionCheck check = check_solution(p, edges);
-    if (check.feasible) best = std::min(best, check.objective);
+    if (check.feasible) matchings.push_back({std::move(edges), check.objective});
   }
+  return matchings;
+}
+
+// The optimum by brute force, or that of the matchings that hold edge `kept`.
+double brute_force_optimum(const MatchingProblem& p, std::optional<std::uint32_t> kept = {}) {
+  double best = kInfinity;
+  for (const Matching& matching : feasible_matchings(p))
+    if (!kept || std::count(matching.edges.begin(), matching.edges.end(), *kept))
+      best = std::min(best, matching.cost);
   return best;
 }
 
@@ -413,6 +427,95 @@ TEST(MatchingNeighbourhood, BelowACutoffTheOptimumIsFoundAndProvenOnlyIfItIsThat
   }
   EXPECT_GT(proven, 100);
   EXPECT_GT(refuted, 100);
+}
+
+// The relaxation's dual, checked, bounds the optimum; every matching of cost <= C keeps clear of
+// the edges it rules out below C, and what is left has the same optimum. Against brute force.
+TEST(MatchingDualBound, RulesOutOnlyEdgesThatNoMatchingBelowTheCostUses) {
+  int ruled_out = 0, bounded = 0;
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    const MatchingProblem p = tiny_instance(seed);
+    const std::vector<Matching> matchings = feasible_matchings(p);
+    const CheckedBound checked = check_dual_bound(p, relaxation_dual(p, 10.0));
+    const std::string what = "seed " + std::to_string(seed);
+    ASSERT_TRUE(checked.valid) << what << ": " << checked.error;
+    if (matchings.empty()) continue;
+    const double optimum = brute_force_optimum(p);
+    EXPECT_LE(checked.bound, optimum) << what;
+    bounded += checked.bound > optimum - 1.0;
+    for (const double cost : {optimum - 0.5, optimum, optimum + 2.0}) {
+      const std::vector<std::uint8_t> allowed = edges_below(p, checked, cost);
+      ruled_out += static_cast<int>(std::count(allowed.begin(), allowed.end(), 0));
+      for (const Matching& matching : matchings)
+        if (matching.cost <= cost)
+          for (std::uint32_t e : matching.edges) EXPECT_TRUE(allowed[e]) << what << " edge " << e;
+    }
+    const Reduction reduction = reduce_below(p, optimum, 10.0);
+    EXPECT_EQ(reduction.part.problem.is_virtual, p.is_virtual) << what;
+    EXPECT_EQ(brute_force_optimum(reduction.part.problem), optimum) << what;
+  }
+  EXPECT_GT(ruled_out, 1000);  // the fixing does something
+  EXPECT_GT(bounded, 100);     // and the bound is mostly within 1 of the optimum
+}
+
+// A square 0-1-2-3 (edges 0-1, 2-3, 1-2, 0-3, weight 1) and a virtual port 4 joined to 3.
+MatchingProblem square_with_a_virtual_port() {
+  MatchingProblem p;
+  p.is_virtual = {0, 0, 0, 0, 1};
+  p.edges = {{0, 1, 1.0}, {2, 3, 1.0}, {1, 2, 1.0}, {0, 3, 1.0}, {3, 4, 5.0}};
+  p.conflicts = {{1, 4}};
+  return p;
+}
+
+std::vector<DualRow> half_on_every_port() {
+  std::vector<DualRow> rows;
+  for (std::uint32_t v = 0; v < 4; ++v) rows.push_back({DualRowKind::degree, v, {}, 0.5});
+  return rows;
+}
+
+TEST(MatchingDualBound, RefusesRowsThatAreNotValid) {
+  const MatchingProblem p = square_with_a_virtual_port();
+  const CheckedBound degrees = check_dual_bound(p, half_on_every_port());
+  ASSERT_TRUE(degrees.valid);
+  EXPECT_NEAR(degrees.bound, 2.0, 1e-9);  // the optimum: both perfect matchings cost 2
+  const auto check_with = [&](DualRow row) {
+    std::vector<DualRow> rows = half_on_every_port();
+    rows.push_back(std::move(row));
+    return check_dual_bound(p, rows);
+  };
+  EXPECT_TRUE(check_with({DualRowKind::clique, 0, {1, 4}, -1.0}).valid);   // a conflict pair
+  EXPECT_TRUE(check_with({DualRowKind::clique, 0, {0, 2}, -1.0}).valid);   // sharing node 1
+  EXPECT_TRUE(check_with({DualRowKind::odd_set, 0, {0, 2}, -1.0}).valid);  // nodes 0, 1, 2
+  const std::vector<std::pair<DualRow, std::string>> bad = {
+      {{DualRowKind::clique, 0, {0, 1}, -1.0}, "edges 0 and 1 share no node"},
+      {{DualRowKind::odd_set, 0, {0, 1}, -1.0}, "even number of nodes"},
+      {{DualRowKind::clique, 0, {2, 0}, -1.0}, "not increasing"},
+      {{DualRowKind::clique, 0, {0, 9}, -1.0}, "not increasing indices of edges"},
+      {{DualRowKind::clique, 0, {}, -1.0}, "not increasing"},
+      {{DualRowKind::degree, 7, {}, 1.0}, "node 7 is none"},
+      {{DualRowKind::degree, 0, {}, std::nan("")}, "not a finite number"}};
+  for (const auto& [row, message] : bad) {
+    const CheckedBound checked = check_with(row);
+    EXPECT_FALSE(checked.valid) << message;
+    EXPECT_NE(checked.error.find("row 4: "), std::string::npos) << checked.error;
+    EXPECT_NE(checked.error.find(message), std::string::npos) << checked.error;
+  }
+}
+
+// A multiplier of the wrong sign would prove too much: the virtual port's row is slack at the
+// optimum, and +10 on it would claim a bound of 12. It counts as 0.
+TEST(MatchingDualBound, AMultiplierOfTheWrongSignCountsAsZero) {
+  const MatchingProblem p = square_with_a_virtual_port();
+  std::vector<DualRow> rows = half_on_every_port();
+  rows.push_back({DualRowKind::degree, 4, {}, 10.0});
+  rows.push_back({DualRowKind::clique, 0, {1, 4}, 3.0});
+  const CheckedBound checked = check_dual_bound(p, rows);
+  ASSERT_TRUE(checked.valid);
+  EXPECT_NEAR(checked.bound, 2.0, 1e-9);
+  // The edge to the virtual port has reduced cost 5 - 0.5: below cost 4 it is ruled out, along
+  // with nothing else.
+  EXPECT_EQ(edges_below(p, checked, 4.0), (std::vector<std::uint8_t>{1, 1, 1, 1, 0}));
+  EXPECT_EQ(edges_below(p, checked, 7.0), (std::vector<std::uint8_t>{1, 1, 1, 1, 1}));
 }
 
 // A path 0-1-2-3 with a chord 0-2 and a parallel edge 2-3: keeping edge 0-1 leaves nodes 2, 3

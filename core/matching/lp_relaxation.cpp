@@ -256,6 +256,31 @@ std::size_t LpRelaxation::add_gomory_cuts(int max_cuts) {
   return static_cast<std::size_t>(made);
 }
 
+std::vector<DualRow> LpRelaxation::dual_rows() const {
+  glp_prob* lp = lp_.get();
+  const int rows = glp_get_num_rows(lp);
+  const int first_cut = static_cast<int>(problem_.node_count()) + 1;
+  std::vector<std::uint8_t> is_clique(static_cast<std::size_t>(rows) + 1, 0);
+  for (const auto& [row, clique] : clique_rows_) is_clique[static_cast<std::size_t>(row)] = 1;
+  std::vector<DualRow> dual(static_cast<std::size_t>(first_cut - 1));
+  for (std::uint32_t v = 0; v < dual.size(); ++v) {
+    dual[v].node = v;
+    dual[v].multiplier = glp_get_row_dual(lp, static_cast<int>(v) + 1);
+  }
+  std::vector<int> index(static_cast<std::size_t>(glp_get_num_cols(lp)) + 1);
+  for (int i = first_cut; i <= rows; ++i) {
+    if (glp_get_row_type(lp, i) != GLP_UP) continue;  // a Gomory row
+    DualRow row;
+    row.kind = is_clique[static_cast<std::size_t>(i)] ? DualRowKind::clique : DualRowKind::odd_set;
+    row.multiplier = glp_get_row_dual(lp, i);
+    const int length = glp_get_mat_row(lp, i, index.data(), nullptr);
+    for (int k = 1; k <= length; ++k) row.edges.push_back(static_cast<std::uint32_t>(index[k] - 1));
+    std::sort(row.edges.begin(), row.edges.end());
+    dual.push_back(std::move(row));
+  }
+  return dual;
+}
+
 LpBasis LpRelaxation::basis() const {
   glp_prob* lp = lp_.get();
   LpBasis b;

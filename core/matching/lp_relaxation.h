@@ -12,6 +12,7 @@
 
 #include "matching/adjacency.h"
 #include "matching/cliques.h"
+#include "matching/dual_bound.h"
 #include "matching/problem.h"
 
 struct glp_prob;
@@ -66,6 +67,11 @@ class LpRelaxation {
   // that go slack instead of pooling them). Valid for every 0/1 point of the current rows and
   // bounds: call at the root only. Returns how many.
   std::size_t add_gomory_cuts(int max_cuts);
+
+  // The degree, clique and odd-set rows of the LP with their duals at the last solve, for
+  // check_dual_bound() (dual_bound.h). Gomory rows are left out, since the problem alone cannot
+  // show them valid: the bound of the others is weaker then, still valid.
+  std::vector<DualRow> dual_rows() const;
 
   LpBasis basis() const;
   void restore(const LpBasis& basis);

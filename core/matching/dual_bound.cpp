@@ -1,0 +1,139 @@
+#include "matching/dual_bound.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+
+#include "base/error.h"
+#include "matching/adjacency.h"
+#include "matching/cliques.h"
+#include "matching/lp_relaxation.h"
+
+namespace tessera::matching {
+
+namespace {
+
+// L is lowered by this much of the magnitude of the terms it sums (in long double, whose rounding
+// is far below it), so that it stays a bound whatever the order of the sums.
+constexpr double kRelativeMargin = 1e-12;
+// Cut rounds of relaxation_dual(): until no row is violated, or the time is up.
+constexpr int kCutRounds = 1000;
+
+bool increasing_edges(std::span<const std::uint32_t> edges, std::size_t edge_count) {
+  for (std::size_t k = 0; k < edges.size(); ++k)
+    if (edges[k] >= edge_count || (k > 0 && edges[k] <= edges[k - 1])) return false;
+  return !edges.empty();
+}
+
+bool share_a_node(const MatchingEdge& a, const MatchingEdge& b) {
+  return a.u == b.u || a.u == b.v || a.v == b.u || a.v == b.v;
+}
+
+// Empty if `row` is valid for every matching without conflicts, else why not.
+std::string row_error(const MatchingProblem& problem, const Adjacency& conflicts,
+                      const DualRow& row) {
+  if (!std::isfinite(row.multiplier)) return "its multiplier is not a finite number";
+  if (row.kind == DualRowKind::degree)
+    return row.node < problem.node_count() ? "" : "node " + std::to_string(row.node) + " is none";
+  if (!increasing_edges(row.edges, problem.edges.size()))
+    return "its edges are not increasing indices of edges";
+  if (row.kind == DualRowKind::clique) {
+    for (std::size_t i = 0; i < row.edges.size(); ++i)
+      for (std::size_t j = i + 1; j < row.edges.size(); ++j) {
+        const std::uint32_t e = row.edges[i], f = row.edges[j];
+        if (!share_a_node(problem.edges[e], problem.edges[f]) && !conflicts.contains(e, f))
+          return "edges " + std::to_string(e) + " and " + std::to_string(f) +
+                 " share no node and form no conflict pair";
+      }
+  }
+  return "";
+}
+
+// The nodes the edges span.
+std::size_t spanned_nodes(const MatchingProblem& problem, std::span<const std::uint32_t> edges) {
+  std::vector<std::uint32_t> nodes;
+  for (std::uint32_t e : edges) {
+    nodes.push_back(problem.edges[e].u);
+    nodes.push_back(problem.edges[e].v);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  return static_cast<std::size_t>(std::unique(nodes.begin(), nodes.end()) - nodes.begin());
+}
+
+}  // namespace
+
+CheckedBound check_dual_bound(const MatchingProblem& problem, const std::vector<DualRow>& rows) {
+  CheckedBound checked;
+  const Adjacency incident = incident_edges(problem);
+  const Adjacency conflicts = conflicting_edges(problem);
+  std::vector<long double> reduced(problem.edges.size());
+  long double magnitude = 0.0L;
+  for (std::size_t e = 0; e < reduced.size(); ++e) {
+    reduced[e] = problem.edges[e].weight;
+    magnitude += std::abs(reduced[e]);
+  }
+  long double dual_objective = 0.0L;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const DualRow& row = rows[r];
+    if (std::string why = row_error(problem, conflicts, row); !why.empty()) {
+      checked.error = "row " + std::to_string(r) + ": " + why;
+      return checked;
+    }
+    const bool equality = row.kind == DualRowKind::degree && !problem.is_virtual[row.node];
+    const long double y = equality ? row.multiplier : std::min(row.multiplier, 0.0);
+    std::span<const std::uint32_t> edges = row.edges;
+    long double right_side = 1.0L;
+    if (row.kind == DualRowKind::degree) edges = incident.of(row.node);
+    if (row.kind == DualRowKind::odd_set) {
+      const std::size_t nodes = spanned_nodes(problem, edges);
+      if (nodes % 2 == 0) {
+        checked.error = "row " + std::to_string(r) + ": its edges span an even number of nodes";
+        return checked;
+      }
+      right_side = static_cast<long double>(nodes - 1) / 2.0L;
+    }
+    dual_objective += y * right_side;
+    magnitude += std::abs(y) * (right_side + static_cast<long double>(edges.size()));
+    for (std::uint32_t e : edges) reduced[e] -= y;
+  }
+  long double bound = dual_objective;
+  for (long double d : reduced) bound += std::min(d, 0.0L);
+  checked.valid = true;
+  checked.bound = static_cast<double>(bound - kRelativeMargin * magnitude);
+  checked.reduced_costs.assign(reduced.begin(), reduced.end());
+  return checked;
+}
+
+std::vector<DualRow> relaxation_dual(const MatchingProblem& problem, double seconds) {
+  const Adjacency exclusive = exclusive_edges(problem);
+  LpRelaxation lp(problem, incident_edges(problem), conflict_cliques(problem));
+  lp.solve_with_cuts(exclusive, std::numeric_limits<double>::infinity(), seconds, kCutRounds);
+  return lp.dual_rows();
+}
+
+std::vector<std::uint8_t> edges_below(const MatchingProblem& problem, const CheckedBound& bound,
+                                      double cost) {
+  const double gap = cost - bound.bound;
+  const Adjacency exclusive = exclusive_edges(problem);
+  std::vector<std::uint8_t> allowed(problem.edges.size(), 1);
+  for (std::uint32_t e = 0; e < allowed.size(); ++e) {
+    const double d = bound.reduced_costs[e];
+    if (d > gap) allowed[e] = 0;  // using e costs at least L + d
+    if (-d > gap)                 // leaving e out costs at least L - d: e is in, its excluded out
+      for (std::uint32_t f : exclusive.of(e)) allowed[f] = 0;
+  }
+  return allowed;
+}
+
+Reduction reduce_below(const MatchingProblem& problem, double cost, double seconds) {
+  Reduction reduction;
+  reduction.bound = check_dual_bound(problem, relaxation_dual(problem, seconds));
+  if (!reduction.bound.valid)
+    throw Error("the relaxation's dual rows failed their check: " + reduction.bound.error);
+  reduction.part = open_part(problem, conflicting_edges(problem), {},
+                             edges_below(problem, reduction.bound, cost));
+  return reduction;
+}
+
+}  // namespace tessera::matching
