@@ -1,10 +1,11 @@
 // The table of bench/solvers.sh: per instance the CPU seconds of every solver, whether their
 // answers agree, and the exact solver's speed-up; then the median ratios per set of instances, by
 // process CPU seconds and, between the solvers of tessera solve, by the seconds of the solve alone.
-// The confirmation runs (solver "cbc-cutoff", CBC given the exact optimum as cutoff, and
-// "glpk-long", glpk-tuned given more time) count in the agreement and have columns of their own,
-// not ratios. Column "confirmed" names the solvers besides exact that finished with the same
-// answer: GLPK (any of its runs) and CBC (with the cutoff or without).
+// The confirmation runs (solvers "cbc-reduced" and "glpk-reduced", CBC and glpk-tuned on the
+// instance `tessera reduce` leaves below the exact optimum; "cbc-cutoff", CBC given that optimum as
+// cutoff; "glpk-long", glpk-tuned given more time) count in the agreement and have columns of
+// their own, not ratios. Column "confirmed" names the solvers besides exact that finished with the
+// same answer: GLPK (any of its runs) and CBC (any of its runs).
 //   node bench/solvers_table.mjs <solvers.tsv> <time-limit>
 import { readFileSync } from 'node:fs';
 
@@ -52,9 +53,12 @@ const median = (xs) => {
 
 // The solvers of tessera solve, whose rows carry the seconds of the solve alone.
 const inProcess = compared.filter((s) => rows.some((r) => r.solver === s && Number.isFinite(r.solve)));
-const confirmations = ['cbc-cutoff', 'glpk-long'].filter((s) => rows.some((r) => r.solver === s));
+const confirmations = ['cbc-reduced', 'cbc-cutoff', 'glpk-reduced', 'glpk-long'].filter((s) => rows.some((r) => r.solver === s));
 const confirmation = (r) => (!r ? '-' : finished(r) ? r.cpu.toFixed(3) : 'unfinished');
-const families = { GLPK: ['glpk', 'glpk-tuned', 'glpsol', 'glpk-long'], CBC: ['cbc', 'cbc-cutoff'] };
+const families = {
+  GLPK: ['glpk', 'glpk-tuned', 'glpsol', 'glpk-reduced', 'glpk-long'],
+  CBC: ['cbc', 'cbc-reduced', 'cbc-cutoff'],
+};
 // The families with a finished run, given that the answers agree.
 const confirmedBy = (results) => Object.keys(families)
   .filter((f) => results.some((r) => families[f].includes(r.solver) && finished(r)));
@@ -110,8 +114,10 @@ const finishedOf = (solver, text) => {
   const runs = rows.filter((r) => r.solver === solver);
   if (runs.length > 0) console.log(`${text}: ${runs.filter(finished).length} of ${runs.length} finished`);
 };
-finishedOf('cbc-cutoff', 'CBC with the exact optimum as cutoff, where CBC alone did not finish');
-finishedOf('glpk-long', 'glpk-tuned with more time, where no run of GLPK finished');
+finishedOf('cbc-reduced', 'CBC below the exact optimum, where CBC alone did not finish');
+finishedOf('cbc-cutoff', 'CBC with the exact optimum as cutoff, where CBC below it did not finish');
+finishedOf('glpk-reduced', 'glpk-tuned below the exact optimum, where no run of GLPK finished');
+finishedOf('glpk-long', 'glpk-tuned with more time, where glpk-tuned below it did not finish');
 const by = (f) => measured.filter((m) => m.confirmed.includes(f)).length;
 console.log(`answers confirmed by GLPK on ${by('GLPK')}, by CBC on ${by('CBC')}, by both on ` +
   `${measured.filter((m) => m.confirmed.length === 2).length} of ${measured.length} instances`);
