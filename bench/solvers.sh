@@ -169,7 +169,7 @@ reduce_instance() {
     "$tessera" reduce "$json" --below "$(confirm_cost)" --output "$tmp/reduced.$form" \
       --time-limit "$confirm" > "$tmp/reduce.out" 2>&1 || return 1
   done
-  echo "solvers.sh: $name reduced: $(sed 's/.*: checked/checked/; s/, in .*//' "$tmp/reduce.out")" >&2
+  echo "solvers.sh: $name reduced: $(sed 's/.*: below/below/; s/, in [^;]*;/;/' "$tmp/reduce.out")" >&2
   reduced=0
 }
 

@@ -51,15 +51,15 @@ void print_reduce_help() {
       "                      [--time-limit S]\n\n"
       "Writes program P1 without the edges that no matching of cost COST or less can use: the\n"
       "dual of its LP relaxation (degree, clique and odd-set rows), checked row by row against\n"
-      "the instance, bounds every matching's cost by its reduced costs (reduced-cost fixing).\n"
+      "the instance, bounds every matching's cost by its reduced costs (reduced-cost fixing);\n"
+      "rounds on what is left, whose relaxation is tighter, while one rules out an edge.\n"
       "The instance written has every matching of cost <= COST, so its optimum is the\n"
       "instance's whenever that costs no more than COST: a solver too slow for the whole\n"
       "instance can confirm an optimum on it.\n\n"
       "  --below COST      the cost (e.g. a claimed optimum, a little above it for rounding)\n"
       "  --output F        the instance left, as CPLEX LP (.lp) or compact JSON (.json)\n"
-      "  --time-limit S    seconds for the LP and its cut rounds (default 600); stopped early, "
-      "the\n"
-      "                    bound is weaker and still checked\n"
+      "  --time-limit S    seconds for all rounds (default 600); stopped early, what is left is\n"
+      "                    larger and still checked\n"
       "  --max-file-bytes N, --max-nodes N, --max-edges N, --max-conflicts N\n"
       "                    as for 'tessera solve'\n");
 }
@@ -159,11 +159,11 @@ int reduce_command(const Args& args) {
   write_file_bytes(output,
                    as_lp ? matching::write_instance_lp(left) : matching::write_instance_json(left));
   std::printf(
-      "%s: checked lower bound %s; below %s, %zu of %zu edges and %zu of %zu conflict pairs are "
-      "left, in %s\n",
-      path.c_str(), number_text(reduction.bound.bound).c_str(), number_text(cost).c_str(),
-      left.edges.size(), problem.edges.size(), left.conflicts.size(), problem.conflicts.size(),
-      output.c_str());
+      "%s: below %s, %zu of %zu edges and %zu of %zu conflict pairs are left after %d rounds, "
+      "in %s; their checked lower bound %s\n",
+      path.c_str(), number_text(cost).c_str(), left.edges.size(), problem.edges.size(),
+      left.conflicts.size(), problem.conflicts.size(), reduction.rounds, output.c_str(),
+      number_text(reduction.bound.bound).c_str());
   return 0;
 }
 

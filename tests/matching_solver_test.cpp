@@ -432,11 +432,13 @@ TEST(MatchingNeighbourhood, BelowACutoffTheOptimumIsFoundAndProvenOnlyIfItIsThat
 // The relaxation's dual, checked, bounds the optimum; every matching of cost <= C keeps clear of
 // the edges it rules out below C, and what is left has the same optimum. Against brute force.
 TEST(MatchingDualBound, RulesOutOnlyEdgesThatNoMatchingBelowTheCostUses) {
-  int ruled_out = 0, bounded = 0;
+  int ruled_out = 0, bounded = 0, more_rounds = 0;
   for (std::uint64_t seed = 1; seed <= 200; ++seed) {
     const MatchingProblem p = tiny_instance(seed);
     const std::vector<Matching> matchings = feasible_matchings(p);
-    const CheckedBound checked = check_dual_bound(p, relaxation_dual(p, 10.0));
+    const ProblemAdjacency adjacency = adjacency_of(p);
+    const CheckedBound checked =
+        check_dual_bound(p, adjacency, relaxation_dual(p, adjacency, 10.0));
     const std::string what = "seed " + std::to_string(seed);
     ASSERT_TRUE(checked.valid) << what << ": " << checked.error;
     if (matchings.empty()) continue;
@@ -444,18 +446,31 @@ TEST(MatchingDualBound, RulesOutOnlyEdgesThatNoMatchingBelowTheCostUses) {
     EXPECT_LE(checked.bound, optimum) << what;
     bounded += checked.bound > optimum - 1.0;
     for (const double cost : {optimum - 0.5, optimum, optimum + 2.0}) {
-      const std::vector<std::uint8_t> allowed = edges_below(p, checked, cost);
+      const std::vector<std::uint8_t> allowed = edges_below(adjacency.exclusive, checked, cost);
       ruled_out += static_cast<int>(std::count(allowed.begin(), allowed.end(), 0));
       for (const Matching& matching : matchings)
         if (matching.cost <= cost)
           for (std::uint32_t e : matching.edges) EXPECT_TRUE(allowed[e]) << what << " edge " << e;
     }
     const Reduction reduction = reduce_below(p, optimum, 10.0);
-    EXPECT_EQ(reduction.part.problem.is_virtual, p.is_virtual) << what;
-    EXPECT_EQ(brute_force_optimum(reduction.part.problem), optimum) << what;
+    const Component& part = reduction.part;
+    EXPECT_EQ(part.problem.is_virtual, p.is_virtual) << what;
+    EXPECT_EQ(brute_force_optimum(part.problem), optimum) << what;
+    EXPECT_LE(reduction.bound.bound, optimum) << what;
+    std::vector<std::uint8_t> left(p.edges.size(), 0);
+    for (std::uint32_t i = 0; i < part.edge_of.size(); ++i) {
+      const MatchingEdge &kept = part.problem.edges[i], &edge = p.edges[part.edge_of[i]];
+      EXPECT_TRUE(kept.u == edge.u && kept.v == edge.v && kept.weight == edge.weight) << what;
+      left[part.edge_of[i]] = 1;
+    }
+    for (const Matching& matching : matchings)
+      if (matching.cost <= optimum)
+        for (std::uint32_t e : matching.edges) EXPECT_TRUE(left[e]) << what << " edge " << e;
+    more_rounds += reduction.rounds > 2;
   }
   EXPECT_GT(ruled_out, 1000);  // the fixing does something
   EXPECT_GT(bounded, 100);     // and the bound is mostly within 1 of the optimum
+  EXPECT_GT(more_rounds, 0);   // a round on what is left rules out more
 }
 
 // A square 0-1-2-3 (edges 0-1, 2-3, 1-2, 0-3, weight 1) and a virtual port 4 joined to 3.
@@ -475,13 +490,14 @@ std::vector<DualRow> half_on_every_port() {
 
 TEST(MatchingDualBound, RefusesRowsThatAreNotValid) {
   const MatchingProblem p = square_with_a_virtual_port();
-  const CheckedBound degrees = check_dual_bound(p, half_on_every_port());
+  const ProblemAdjacency adjacency = adjacency_of(p);
+  const CheckedBound degrees = check_dual_bound(p, adjacency, half_on_every_port());
   ASSERT_TRUE(degrees.valid);
   EXPECT_NEAR(degrees.bound, 2.0, 1e-9);  // the optimum: both perfect matchings cost 2
   const auto check_with = [&](DualRow row) {
     std::vector<DualRow> rows = half_on_every_port();
     rows.push_back(std::move(row));
-    return check_dual_bound(p, rows);
+    return check_dual_bound(p, adjacency, rows);
   };
   EXPECT_TRUE(check_with({DualRowKind::clique, 0, {1, 4}, -1.0}).valid);   // a conflict pair
   EXPECT_TRUE(check_with({DualRowKind::clique, 0, {0, 2}, -1.0}).valid);   // sharing node 1
@@ -509,13 +525,33 @@ TEST(MatchingDualBound, AMultiplierOfTheWrongSignCountsAsZero) {
   std::vector<DualRow> rows = half_on_every_port();
   rows.push_back({DualRowKind::degree, 4, {}, 10.0});
   rows.push_back({DualRowKind::clique, 0, {1, 4}, 3.0});
-  const CheckedBound checked = check_dual_bound(p, rows);
+  const ProblemAdjacency adjacency = adjacency_of(p);
+  const CheckedBound checked = check_dual_bound(p, adjacency, rows);
   ASSERT_TRUE(checked.valid);
   EXPECT_NEAR(checked.bound, 2.0, 1e-9);
   // The edge to the virtual port has reduced cost 5 - 0.5: below cost 4 it is ruled out, along
   // with nothing else.
-  EXPECT_EQ(edges_below(p, checked, 4.0), (std::vector<std::uint8_t>{1, 1, 1, 1, 0}));
-  EXPECT_EQ(edges_below(p, checked, 7.0), (std::vector<std::uint8_t>{1, 1, 1, 1, 1}));
+  EXPECT_EQ(edges_below(adjacency.exclusive, checked, 4.0),
+            (std::vector<std::uint8_t>{1, 1, 1, 1, 0}));
+  EXPECT_EQ(edges_below(adjacency.exclusive, checked, 7.0),
+            (std::vector<std::uint8_t>{1, 1, 1, 1, 1}));
+}
+
+// Multipliers 1 on the ports give the square's edges reduced cost -1 and a weak bound L = 0. An
+// edge in the matching leaves out the two edges at its ends, whose -1 then no longer count: it
+// costs at least L + 2. Below 1.5 every edge goes; below 2, the optimum, none of the square's.
+TEST(MatchingDualBound, AnEdgeInLeavesOutTheNegativeReducedCostsOfTheEdgesItExcludes) {
+  const MatchingProblem p = square_with_a_virtual_port();
+  std::vector<DualRow> rows;
+  for (std::uint32_t v = 0; v < 4; ++v) rows.push_back({DualRowKind::degree, v, {}, 1.0});
+  const ProblemAdjacency adjacency = adjacency_of(p);
+  const CheckedBound checked = check_dual_bound(p, adjacency, rows);
+  ASSERT_TRUE(checked.valid);
+  EXPECT_NEAR(checked.bound, 0.0, 1e-9);
+  EXPECT_EQ(edges_below(adjacency.exclusive, checked, 1.5),
+            (std::vector<std::uint8_t>{0, 0, 0, 0, 0}));
+  EXPECT_EQ(edges_below(adjacency.exclusive, checked, 2.0),
+            (std::vector<std::uint8_t>{1, 1, 1, 1, 0}));
 }
 
 // A path 0-1-2-3 with a chord 0-2 and a parallel edge 2-3: keeping edge 0-1 leaves nodes 2, 3

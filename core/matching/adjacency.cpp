@@ -70,4 +70,8 @@ Adjacency exclusive_edges(const MatchingProblem& problem) {
   return adjacency_from_pairs(problem.edges.size(), pairs);
 }
 
+ProblemAdjacency adjacency_of(const MatchingProblem& problem) {
+  return {incident_edges(problem), conflicting_edges(problem), exclusive_edges(problem)};
+}
+
 }  // namespace tessera::matching

@@ -36,4 +36,10 @@ Adjacency conflicting_edges(const MatchingProblem& problem);
 // Per edge, the edges that cannot be chosen with it: its conflicts and the edges sharing a node.
 Adjacency exclusive_edges(const MatchingProblem& problem);
 
+// The three of a problem, for the stages that need them all.
+struct ProblemAdjacency {
+  Adjacency incident, conflicts, exclusive;
+};
+ProblemAdjacency adjacency_of(const MatchingProblem& problem);
+
 }  // namespace tessera::matching

@@ -1,12 +1,13 @@
 #include "matching/dual_bound.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <span>
 
 #include "base/error.h"
-#include "matching/adjacency.h"
 #include "matching/cliques.h"
 #include "matching/lp_relaxation.h"
 
@@ -61,12 +62,22 @@ std::size_t spanned_nodes(const MatchingProblem& problem, std::span<const std::u
   return static_cast<std::size_t>(std::unique(nodes.begin(), nodes.end()) - nodes.begin());
 }
 
+// The problem as a part of itself.
+Component whole(const MatchingProblem& problem) {
+  Component part;
+  part.problem = problem;
+  part.node_of.resize(problem.node_count());
+  std::iota(part.node_of.begin(), part.node_of.end(), 0U);
+  part.edge_of.resize(problem.edges.size());
+  std::iota(part.edge_of.begin(), part.edge_of.end(), 0U);
+  return part;
+}
+
 }  // namespace
 
-CheckedBound check_dual_bound(const MatchingProblem& problem, const std::vector<DualRow>& rows) {
+CheckedBound check_dual_bound(const MatchingProblem& problem, const ProblemAdjacency& adjacency,
+                              const std::vector<DualRow>& rows) {
   CheckedBound checked;
-  const Adjacency incident = incident_edges(problem);
-  const Adjacency conflicts = conflicting_edges(problem);
   std::vector<long double> reduced(problem.edges.size());
   long double magnitude = 0.0L;
   for (std::size_t e = 0; e < reduced.size(); ++e) {
@@ -76,7 +87,7 @@ CheckedBound check_dual_bound(const MatchingProblem& problem, const std::vector<
   long double dual_objective = 0.0L;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const DualRow& row = rows[r];
-    if (std::string why = row_error(problem, conflicts, row); !why.empty()) {
+    if (std::string why = row_error(problem, adjacency.conflicts, row); !why.empty()) {
       checked.error = "row " + std::to_string(r) + ": " + why;
       return checked;
     }
@@ -84,7 +95,7 @@ CheckedBound check_dual_bound(const MatchingProblem& problem, const std::vector<
     const long double y = equality ? row.multiplier : std::min(row.multiplier, 0.0);
     std::span<const std::uint32_t> edges = row.edges;
     long double right_side = 1.0L;
-    if (row.kind == DualRowKind::degree) edges = incident.of(row.node);
+    if (row.kind == DualRowKind::degree) edges = adjacency.incident.of(row.node);
     if (row.kind == DualRowKind::odd_set) {
       const std::size_t nodes = spanned_nodes(problem, edges);
       if (nodes % 2 == 0) {
@@ -105,34 +116,52 @@ CheckedBound check_dual_bound(const MatchingProblem& problem, const std::vector<
   return checked;
 }
 
-std::vector<DualRow> relaxation_dual(const MatchingProblem& problem, double seconds) {
-  const Adjacency exclusive = exclusive_edges(problem);
-  LpRelaxation lp(problem, incident_edges(problem), conflict_cliques(problem));
-  lp.solve_with_cuts(exclusive, std::numeric_limits<double>::infinity(), seconds, kCutRounds);
+std::vector<DualRow> relaxation_dual(const MatchingProblem& problem,
+                                     const ProblemAdjacency& adjacency, double seconds) {
+  LpRelaxation lp(problem, adjacency.incident,
+                  clique_cover(adjacency.exclusive, adjacency.conflicts));
+  lp.solve_with_cuts(adjacency.exclusive, std::numeric_limits<double>::infinity(), seconds,
+                     kCutRounds);
   return lp.dual_rows();
 }
 
-std::vector<std::uint8_t> edges_below(const MatchingProblem& problem, const CheckedBound& bound,
+std::vector<std::uint8_t> edges_below(const Adjacency& exclusive, const CheckedBound& bound,
                                       double cost) {
   const double gap = cost - bound.bound;
-  const Adjacency exclusive = exclusive_edges(problem);
-  std::vector<std::uint8_t> allowed(problem.edges.size(), 1);
+  std::vector<std::uint8_t> allowed(bound.reduced_costs.size(), 1);
+  const std::vector<double>& d = bound.reduced_costs;
   for (std::uint32_t e = 0; e < allowed.size(); ++e) {
-    const double d = bound.reduced_costs[e];
-    if (d > gap) allowed[e] = 0;  // using e costs at least L + d
-    if (-d > gap)                 // leaving e out costs at least L - d: e is in, its excluded out
+    double using_e = std::max(d[e], 0.0);  // over L; and the edges it excludes are left out
+    for (std::uint32_t f : exclusive.of(e)) using_e += std::max(-d[f], 0.0);
+    if (using_e > gap) allowed[e] = 0;
+    if (-d[e] > gap)  // leaving e out costs at least L - d: e is in, its excluded out
       for (std::uint32_t f : exclusive.of(e)) allowed[f] = 0;
   }
   return allowed;
 }
 
 Reduction reduce_below(const MatchingProblem& problem, double cost, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   Reduction reduction;
-  reduction.bound = check_dual_bound(problem, relaxation_dual(problem, seconds));
-  if (!reduction.bound.valid)
-    throw Error("the relaxation's dual rows failed their check: " + reduction.bound.error);
-  reduction.part = open_part(problem, conflicting_edges(problem), {},
-                             edges_below(problem, reduction.bound, cost));
+  reduction.part = whole(problem);
+  for (;;) {
+    const MatchingProblem& left = reduction.part.problem;
+    const ProblemAdjacency adjacency = adjacency_of(left);
+    const double remaining =
+        std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+    reduction.bound =
+        check_dual_bound(left, adjacency, relaxation_dual(left, adjacency, remaining));
+    ++reduction.rounds;
+    if (!reduction.bound.valid)
+      throw Error("the relaxation's dual rows failed their check: " + reduction.bound.error);
+    const std::vector<std::uint8_t> allowed =
+        edges_below(adjacency.exclusive, reduction.bound, cost);
+    if (std::find(allowed.begin(), allowed.end(), 0) == allowed.end()) break;
+    Component next = open_part(left, adjacency.conflicts, {}, allowed);
+    for (std::uint32_t& e : next.edge_of) e = reduction.part.edge_of[e];
+    reduction.part = std::move(next);
+    if (std::chrono::steady_clock::now() >= deadline) break;
+  }
   return reduction;
 }
 

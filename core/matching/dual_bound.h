@@ -7,9 +7,10 @@
 // (y_r <= 0) and a_r x = b_r (y free), reduced costs d = w - sum_r y_r a_r, bound
 // L = sum_r y_r b_r + sum_e min(0, d_e):
 //   w x >= sum_r y_r b_r + d x >= L + |d_e| for each edge e with d_e > 0 and x_e = 1, or with
-//   d_e < 0 and x_e = 0.
-// So no such matching uses an edge with L + d_e > cost, nor an edge that excludes (shares a node
-// with, or conflicts with) an edge with L - d_e > cost. The instance without those edges has every
+//   d_e < 0 and x_e = 0; and x_e = 1 leaves out the edges X(e) that e excludes (share a node
+//   with it, or form a conflict pair with it), whose negative d_f then no longer count.
+// So no such matching uses an edge with L + max(0, d_e) + sum_{f in X(e)} max(0, -d_f) > cost,
+// nor an edge of X(e) for an edge e with L - d_e > cost. The instance without those edges has every
 // matching of cost <= `cost`: the same optimum, if that costs no more. Its purpose: second solvers
 // (GLPK, CBC) that cannot solve the whole instance can confirm the optimum on what is left.
 #pragma once
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "matching/adjacency.h"
 #include "matching/components.h"
 #include "matching/problem.h"
 
@@ -46,23 +48,31 @@ struct CheckedBound {
 
 // Checks every row against the problem (degree rows are taken from the problem itself; multipliers
 // of the wrong sign count as 0) and computes L and d in extended precision.
-CheckedBound check_dual_bound(const MatchingProblem& problem, const std::vector<DualRow>& rows);
+CheckedBound check_dual_bound(const MatchingProblem& problem, const ProblemAdjacency& adjacency,
+                              const std::vector<DualRow>& rows);
 
 // The rows of the relaxation at its optimum: degree rows, then the clique rows of the conflict
 // pairs (the cover, and the violated cliques of the exclusion graph) and the odd-set rows that the
 // cut rounds bring in, until none is violated or `seconds` pass (then the rows so far: a weaker
 // bound, still valid).
-std::vector<DualRow> relaxation_dual(const MatchingProblem& problem, double seconds);
+std::vector<DualRow> relaxation_dual(const MatchingProblem& problem,
+                                     const ProblemAdjacency& adjacency, double seconds);
 
-// Per edge, 0 where `bound` shows that no matching of cost <= `cost` uses it.
-std::vector<std::uint8_t> edges_below(const MatchingProblem& problem, const CheckedBound& bound,
+// Per edge, 0 where `bound` shows that no matching of cost <= `cost` uses it (`exclusive`:
+// exclusive_edges() of the problem).
+std::vector<std::uint8_t> edges_below(const Adjacency& exclusive, const CheckedBound& bound,
                                       double cost);
 
-// What relaxation_dual() and the check leave of the problem below `cost`: the same nodes, the edges
-// edges_below() keeps (edge_of: their indices in `problem`), the conflict pairs among them.
+// What is left of the problem below `cost`: the same nodes, the edges that no round rules out
+// (edge_of: their indices in `problem`), the conflict pairs among them. Each round solves the
+// relaxation of what the rounds before left, checks its dual and drops the edges edges_below()
+// rules out; every matching of cost <= `cost` keeps clear of them, so it is in what is left, whose
+// relaxation is tighter. The rounds go on while one drops an edge and `seconds` last. `bound` is
+// the last round's: a lower bound on every matching of cost <= `cost`.
 struct Reduction {
   CheckedBound bound;
   Component part;
+  int rounds = 0;
 };
 Reduction reduce_below(const MatchingProblem& problem, double cost, double seconds);
 

@@ -118,16 +118,30 @@ LpStatus LpRelaxation::solve_with_cuts(const Adjacency& exclusion, double cutoff
   return status;
 }
 
+std::vector<std::uint8_t> LpRelaxation::clique_row_marks() const {
+  std::vector<std::uint8_t> is_clique(static_cast<std::size_t>(glp_get_num_rows(lp_.get())) + 1, 0);
+  for (const auto& [row, clique] : clique_rows_) is_clique[static_cast<std::size_t>(row)] = 1;
+  return is_clique;
+}
+
+std::vector<std::uint32_t> LpRelaxation::row_edges(int row) const {
+  std::vector<int> index(
+      static_cast<std::size_t>(glp_get_mat_row(lp_.get(), row, nullptr, nullptr)) + 1);
+  const int length = glp_get_mat_row(lp_.get(), row, index.data(), nullptr);
+  std::vector<std::uint32_t> edges;
+  for (int k = 1; k <= length; ++k) edges.push_back(static_cast<std::uint32_t>(index[k] - 1));
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
 void LpRelaxation::drop_slack_rows() {
   glp_prob* lp = lp_.get();
   const int rows = glp_get_num_rows(lp);
   const int first_cut = static_cast<int>(problem_.node_count()) + 1;  // after the degree rows
-  std::vector<std::uint8_t> is_clique(static_cast<std::size_t>(rows) + 1, 0);
-  for (const auto& [row, clique] : clique_rows_) is_clique[static_cast<std::size_t>(row)] = 1;
+  const std::vector<std::uint8_t> is_clique = clique_row_marks();
   std::vector<int> dropped{0};  // GLPK's 1-based list
   std::vector<int> new_number(static_cast<std::size_t>(rows) + 1, 0);
   int kept = 0;
-  std::vector<int> index(glp_get_num_cols(lp) + 1);
   for (int i = 1; i <= rows; ++i) {
     const bool gomory = glp_get_row_type(lp, i) == GLP_LO;
     const double slack = gomory ? glp_get_row_prim(lp, i) - glp_get_row_lb(lp, i)
@@ -141,9 +155,7 @@ void LpRelaxation::drop_slack_rows() {
     PooledRow row;
     row.bound = glp_get_row_ub(lp, i);
     row.clique = is_clique[static_cast<std::size_t>(i)] != 0;
-    const int length = glp_get_mat_row(lp, i, index.data(), nullptr);
-    for (int k = 1; k <= length; ++k) row.edges.push_back(static_cast<std::uint32_t>(index[k] - 1));
-    std::sort(row.edges.begin(), row.edges.end());
+    row.edges = row_edges(i);
     pool_.push_back(std::move(row));
   }
   if (dropped.size() == 1) return;
@@ -260,22 +272,18 @@ std::vector<DualRow> LpRelaxation::dual_rows() const {
   glp_prob* lp = lp_.get();
   const int rows = glp_get_num_rows(lp);
   const int first_cut = static_cast<int>(problem_.node_count()) + 1;
-  std::vector<std::uint8_t> is_clique(static_cast<std::size_t>(rows) + 1, 0);
-  for (const auto& [row, clique] : clique_rows_) is_clique[static_cast<std::size_t>(row)] = 1;
+  const std::vector<std::uint8_t> is_clique = clique_row_marks();
   std::vector<DualRow> dual(static_cast<std::size_t>(first_cut - 1));
   for (std::uint32_t v = 0; v < dual.size(); ++v) {
     dual[v].node = v;
     dual[v].multiplier = glp_get_row_dual(lp, static_cast<int>(v) + 1);
   }
-  std::vector<int> index(static_cast<std::size_t>(glp_get_num_cols(lp)) + 1);
   for (int i = first_cut; i <= rows; ++i) {
     if (glp_get_row_type(lp, i) != GLP_UP) continue;  // a Gomory row
     DualRow row;
     row.kind = is_clique[static_cast<std::size_t>(i)] ? DualRowKind::clique : DualRowKind::odd_set;
     row.multiplier = glp_get_row_dual(lp, i);
-    const int length = glp_get_mat_row(lp, i, index.data(), nullptr);
-    for (int k = 1; k <= length; ++k) row.edges.push_back(static_cast<std::uint32_t>(index[k] - 1));
-    std::sort(row.edges.begin(), row.edges.end());
+    row.edges = row_edges(i);
     dual.push_back(std::move(row));
   }
   return dual;

@@ -97,6 +97,10 @@ class LpRelaxation {
     double bound = 1.0;
     bool clique = true;
   };
+  // Per GLPK row (1-based), 1 if it is a clique row.
+  std::vector<std::uint8_t> clique_row_marks() const;
+  // The edges of GLPK row `row`, increasing.
+  std::vector<std::uint32_t> row_edges(int row) const;
   // Adds the pooled rows the current solution violates, takes them out of the pool; how many.
   std::size_t add_violated_pooled_rows();
   void add_clique_row(const Clique& clique);

@@ -22,11 +22,10 @@ MatchingResult solve_glpk_tuned(const MatchingProblem& problem, double time_limi
   GlpkConfig config;
   config.clique_rows = true;
   config.cuts = true;
-  const Adjacency incident = incident_edges(problem);
-  const Adjacency conflicts = conflicting_edges(problem);
+  const ProblemAdjacency adjacency = adjacency_of(problem);
   const std::vector<Fixed> none(problem.edges.size(), Fixed::free);
-  const Adjacency exclusive = exclusive_edges(problem);
-  const IncumbentSearch heuristics(problem, incident, conflicts, exclusive, none);
+  const IncumbentSearch heuristics(problem, adjacency.incident, adjacency.conflicts,
+                                   adjacency.exclusive, none);
   const Incumbent incumbent =
       heuristics.lagrangian_repair(std::vector<double>(problem.edges.size(), 0.0), kRepairRounds);
   if (incumbent.found) config.incumbent = incumbent.edges;
