@@ -518,40 +518,41 @@ TEST(MatchingDualBound, RefusesRowsThatAreNotValid) {
   }
 }
 
-// A multiplier of the wrong sign would prove too much: the virtual port's row is slack at the
-// optimum, and +10 on it would claim a bound of 12. It counts as 0.
-TEST(MatchingDualBound, AMultiplierOfTheWrongSignCountsAsZero) {
+// check_dual_bound() of `rows` on the square, which should be `bound`, and edges_below() of it at
+// each cost.
+std::vector<std::vector<std::uint8_t>> square_edges_below(const std::vector<DualRow>& rows,
+                                                          double bound,
+                                                          const std::vector<double>& costs) {
   const MatchingProblem p = square_with_a_virtual_port();
+  const ProblemAdjacency adjacency = adjacency_of(p);
+  const CheckedBound checked = check_dual_bound(p, adjacency, rows);
+  EXPECT_TRUE(checked.valid) << checked.error;
+  EXPECT_NEAR(checked.bound, bound, 1e-9);
+  std::vector<std::vector<std::uint8_t>> allowed;
+  for (const double cost : costs)
+    allowed.push_back(edges_below(adjacency.exclusive, checked, cost));
+  return allowed;
+}
+
+using Allowed = std::vector<std::vector<std::uint8_t>>;
+
+// A multiplier of the wrong sign would prove too much: the virtual port's row is slack at the
+// optimum, and +10 on it would claim a bound of 12. It counts as 0. The edge to the virtual port
+// has reduced cost 5 - 0.5: below cost 4 it is ruled out, along with nothing else.
+TEST(MatchingDualBound, AMultiplierOfTheWrongSignCountsAsZero) {
   std::vector<DualRow> rows = half_on_every_port();
   rows.push_back({DualRowKind::degree, 4, {}, 10.0});
   rows.push_back({DualRowKind::clique, 0, {1, 4}, 3.0});
-  const ProblemAdjacency adjacency = adjacency_of(p);
-  const CheckedBound checked = check_dual_bound(p, adjacency, rows);
-  ASSERT_TRUE(checked.valid);
-  EXPECT_NEAR(checked.bound, 2.0, 1e-9);
-  // The edge to the virtual port has reduced cost 5 - 0.5: below cost 4 it is ruled out, along
-  // with nothing else.
-  EXPECT_EQ(edges_below(adjacency.exclusive, checked, 4.0),
-            (std::vector<std::uint8_t>{1, 1, 1, 1, 0}));
-  EXPECT_EQ(edges_below(adjacency.exclusive, checked, 7.0),
-            (std::vector<std::uint8_t>{1, 1, 1, 1, 1}));
+  EXPECT_EQ(square_edges_below(rows, 2.0, {4.0, 7.0}), (Allowed{{1, 1, 1, 1, 0}, {1, 1, 1, 1, 1}}));
 }
 
 // Multipliers 1 on the ports give the square's edges reduced cost -1 and a weak bound L = 0. An
 // edge in the matching leaves out the two edges at its ends, whose -1 then no longer count: it
 // costs at least L + 2. Below 1.5 every edge goes; below 2, the optimum, none of the square's.
 TEST(MatchingDualBound, AnEdgeInLeavesOutTheNegativeReducedCostsOfTheEdgesItExcludes) {
-  const MatchingProblem p = square_with_a_virtual_port();
-  std::vector<DualRow> rows;
-  for (std::uint32_t v = 0; v < 4; ++v) rows.push_back({DualRowKind::degree, v, {}, 1.0});
-  const ProblemAdjacency adjacency = adjacency_of(p);
-  const CheckedBound checked = check_dual_bound(p, adjacency, rows);
-  ASSERT_TRUE(checked.valid);
-  EXPECT_NEAR(checked.bound, 0.0, 1e-9);
-  EXPECT_EQ(edges_below(adjacency.exclusive, checked, 1.5),
-            (std::vector<std::uint8_t>{0, 0, 0, 0, 0}));
-  EXPECT_EQ(edges_below(adjacency.exclusive, checked, 2.0),
-            (std::vector<std::uint8_t>{1, 1, 1, 1, 0}));
+  std::vector<DualRow> rows = half_on_every_port();
+  for (DualRow& row : rows) row.multiplier = 1.0;
+  EXPECT_EQ(square_edges_below(rows, 0.0, {1.5, 2.0}), (Allowed{{0, 0, 0, 0, 0}, {1, 1, 1, 1, 0}}));
 }
 
 // A path 0-1-2-3 with a chord 0-2 and a parallel edge 2-3: keeping edge 0-1 leaves nodes 2, 3
