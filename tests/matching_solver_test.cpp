@@ -446,7 +446,7 @@ TEST(MatchingDualBound, RulesOutOnlyEdgesThatNoMatchingBelowTheCostUses) {
     EXPECT_LE(checked.bound, optimum) << what;
     bounded += checked.bound > optimum - 1.0;
     for (const double cost : {optimum - 0.5, optimum, optimum + 2.0}) {
-      const std::vector<std::uint8_t> allowed = edges_below(adjacency.exclusive, checked, cost);
+      const std::vector<std::uint8_t> allowed = edges_below(p, adjacency, checked, cost);
       ruled_out += static_cast<int>(std::count(allowed.begin(), allowed.end(), 0));
       for (const Matching& matching : matchings)
         if (matching.cost <= cost)
@@ -518,32 +518,32 @@ TEST(MatchingDualBound, RefusesRowsThatAreNotValid) {
   }
 }
 
-// check_dual_bound() of `rows` on the square, which should be `bound`, and edges_below() of it at
-// each cost.
-std::vector<std::vector<std::uint8_t>> square_edges_below(const std::vector<DualRow>& rows,
-                                                          double bound,
-                                                          const std::vector<double>& costs) {
-  const MatchingProblem p = square_with_a_virtual_port();
+// check_dual_bound() of `rows` on `p`, which should be `bound`, and edges_below() of it at each
+// cost.
+std::vector<std::vector<std::uint8_t>> edges_below_costs(const MatchingProblem& p,
+                                                         const std::vector<DualRow>& rows,
+                                                         double bound,
+                                                         const std::vector<double>& costs) {
   const ProblemAdjacency adjacency = adjacency_of(p);
   const CheckedBound checked = check_dual_bound(p, adjacency, rows);
   EXPECT_TRUE(checked.valid) << checked.error;
   EXPECT_NEAR(checked.bound, bound, 1e-9);
   std::vector<std::vector<std::uint8_t>> allowed;
-  for (const double cost : costs)
-    allowed.push_back(edges_below(adjacency.exclusive, checked, cost));
+  for (const double cost : costs) allowed.push_back(edges_below(p, adjacency, checked, cost));
   return allowed;
 }
 
 using Allowed = std::vector<std::vector<std::uint8_t>>;
 
 // A multiplier of the wrong sign would prove too much: the virtual port's row is slack at the
-// optimum, and +10 on it would claim a bound of 12. It counts as 0. The edge to the virtual port
-// has reduced cost 5 - 0.5: below cost 4 it is ruled out, along with nothing else.
+// optimum, and +10 on it would claim a bound of 12. It counts as 0. Below cost 4 the edge to the
+// virtual port (3-4) is ruled out (and below any cost: with it in, 0-1 and 1-2 are both forced).
 TEST(MatchingDualBound, AMultiplierOfTheWrongSignCountsAsZero) {
   std::vector<DualRow> rows = half_on_every_port();
   rows.push_back({DualRowKind::degree, 4, {}, 10.0});
   rows.push_back({DualRowKind::clique, 0, {1, 4}, 3.0});
-  EXPECT_EQ(square_edges_below(rows, 2.0, {4.0, 7.0}), (Allowed{{1, 1, 1, 1, 0}, {1, 1, 1, 1, 1}}));
+  EXPECT_EQ(edges_below_costs(square_with_a_virtual_port(), rows, 2.0, {4.0, 1e9}),
+            (Allowed{{1, 1, 1, 1, 0}, {1, 1, 1, 1, 0}}));
 }
 
 // Multipliers 1 on the ports give the square's edges reduced cost -1 and a weak bound L = 0. An
@@ -552,7 +552,17 @@ TEST(MatchingDualBound, AMultiplierOfTheWrongSignCountsAsZero) {
 TEST(MatchingDualBound, AnEdgeInLeavesOutTheNegativeReducedCostsOfTheEdgesItExcludes) {
   std::vector<DualRow> rows = half_on_every_port();
   for (DualRow& row : rows) row.multiplier = 1.0;
-  EXPECT_EQ(square_edges_below(rows, 0.0, {1.5, 2.0}), (Allowed{{0, 0, 0, 0, 0}, {1, 1, 1, 1, 0}}));
+  EXPECT_EQ(edges_below_costs(square_with_a_virtual_port(), rows, 0.0, {1.5, 2.0}),
+            (Allowed{{0, 0, 0, 0, 0}, {1, 1, 1, 1, 0}}));
+}
+
+// A square 0-1-2-3 whose edge 0-1 costs 0 and forces 2-3, which costs 5: with no multipliers,
+// L = 0 and below cost 2 (the other perfect matching's) 0-1 goes too, by propagation.
+TEST(MatchingDualBound, AnEdgeInCountsTheReducedCostsOfTheEdgesItForces) {
+  MatchingProblem p;
+  p.is_virtual = {0, 0, 0, 0};
+  p.edges = {{0, 1, 0.0}, {2, 3, 5.0}, {1, 2, 1.0}, {0, 3, 1.0}};
+  EXPECT_EQ(edges_below_costs(p, {}, 0.0, {2.0, 5.0}), (Allowed{{0, 0, 1, 1}, {1, 1, 1, 1}}));
 }
 
 // A path 0-1-2-3 with a chord 0-2 and a parallel edge 2-3: keeping edge 0-1 leaves nodes 2, 3

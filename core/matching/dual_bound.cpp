@@ -10,6 +10,7 @@
 #include "base/error.h"
 #include "matching/cliques.h"
 #include "matching/lp_relaxation.h"
+#include "matching/propagation.h"
 
 namespace tessera::matching {
 
@@ -125,17 +126,24 @@ std::vector<DualRow> relaxation_dual(const MatchingProblem& problem,
   return lp.dual_rows();
 }
 
-std::vector<std::uint8_t> edges_below(const Adjacency& exclusive, const CheckedBound& bound,
+std::vector<std::uint8_t> edges_below(const MatchingProblem& problem,
+                                      const ProblemAdjacency& adjacency, const CheckedBound& bound,
                                       double cost) {
   const double gap = cost - bound.bound;
-  std::vector<std::uint8_t> allowed(bound.reduced_costs.size(), 1);
   const std::vector<double>& d = bound.reduced_costs;
+  std::vector<std::uint8_t> allowed(d.size(), 1);
+  Propagation propagation(problem, adjacency.incident, adjacency.exclusive);
   for (std::uint32_t e = 0; e < allowed.size(); ++e) {
-    double using_e = std::max(d[e], 0.0);  // over L; and the edges it excludes are left out
-    for (std::uint32_t f : exclusive.of(e)) using_e += std::max(-d[f], 0.0);
-    if (using_e > gap) allowed[e] = 0;
     if (-d[e] > gap)  // leaving e out costs at least L - d: e is in, its excluded out
-      for (std::uint32_t f : exclusive.of(e)) allowed[f] = 0;
+      for (std::uint32_t f : adjacency.exclusive.of(e)) allowed[f] = 0;
+    if (!propagation.try_one(e)) {  // no matching uses e
+      allowed[e] = 0;
+      continue;
+    }
+    double using_e = 0.0;  // over L
+    for (std::uint32_t g : propagation.forced()) using_e += std::max(d[g], 0.0);
+    for (std::uint32_t f : propagation.dropped()) using_e += std::max(-d[f], 0.0);
+    if (using_e > gap) allowed[e] = 0;
   }
   return allowed;
 }
@@ -154,8 +162,7 @@ Reduction reduce_below(const MatchingProblem& problem, double cost, double secon
     ++reduction.rounds;
     if (!reduction.bound.valid)
       throw Error("the relaxation's dual rows failed their check: " + reduction.bound.error);
-    const std::vector<std::uint8_t> allowed =
-        edges_below(adjacency.exclusive, reduction.bound, cost);
+    const std::vector<std::uint8_t> allowed = edges_below(left, adjacency, reduction.bound, cost);
     if (std::find(allowed.begin(), allowed.end(), 0) == allowed.end()) break;
     Component next = open_part(left, adjacency.conflicts, {}, allowed);
     for (std::uint32_t& e : next.edge_of) e = reduction.part.edge_of[e];

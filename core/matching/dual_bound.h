@@ -7,10 +7,12 @@
 // (y_r <= 0) and a_r x = b_r (y free), reduced costs d = w - sum_r y_r a_r, bound
 // L = sum_r y_r b_r + sum_e min(0, d_e):
 //   w x >= sum_r y_r b_r + d x >= L + |d_e| for each edge e with d_e > 0 and x_e = 1, or with
-//   d_e < 0 and x_e = 0; and x_e = 1 leaves out the edges X(e) that e excludes (share a node
-//   with it, or form a conflict pair with it), whose negative d_f then no longer count.
-// So no such matching uses an edge with L + max(0, d_e) + sum_{f in X(e)} max(0, -d_f) > cost,
-// nor an edge of X(e) for an edge e with L - d_e > cost. The instance without those edges has every
+//   d_e < 0 and x_e = 0. x_e = 1 forces, by propagation (propagation.h), the edges O(e) (e among
+//   them) to 1 and the edges Z(e) to 0 (those that share a node or form a conflict pair with an
+//   edge of O(e), and so on), or ends in a contradiction; then
+//   w x >= L + sum_{g in O(e)} max(0, d_g) + sum_{f in Z(e)} max(0, -d_f).
+// So no such matching uses an edge with a contradiction or with that sum > cost, nor an edge
+// that excludes an edge e with L - d_e > cost. The instance without those edges has every
 // matching of cost <= `cost`: the same optimum, if that costs no more. Its purpose: second solvers
 // (GLPK, CBC) that cannot solve the whole instance can confirm the optimum on what is left.
 #pragma once
@@ -58,9 +60,9 @@ CheckedBound check_dual_bound(const MatchingProblem& problem, const ProblemAdjac
 std::vector<DualRow> relaxation_dual(const MatchingProblem& problem,
                                      const ProblemAdjacency& adjacency, double seconds);
 
-// Per edge, 0 where `bound` shows that no matching of cost <= `cost` uses it (`exclusive`:
-// exclusive_edges() of the problem).
-std::vector<std::uint8_t> edges_below(const Adjacency& exclusive, const CheckedBound& bound,
+// Per edge, 0 where `bound` shows that no matching of cost <= `cost` uses it.
+std::vector<std::uint8_t> edges_below(const MatchingProblem& problem,
+                                      const ProblemAdjacency& adjacency, const CheckedBound& bound,
                                       double cost);
 
 // What is left of the problem below `cost`: the same nodes, the edges that no round rules out

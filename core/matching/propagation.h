@@ -31,6 +31,8 @@ class Propagation {
   // itself (direct_drops() of them), then those its forced edges excluded.
   const std::vector<std::uint32_t>& dropped() const { return dropped_; }
   std::size_t direct_drops() const { return direct_drops_; }
+  // The edges the last successful try_one() drove to 1: e, then those it forced.
+  const std::vector<std::uint32_t>& forced() const { return forced_; }
   // Makes the consequences of the last successful try_one() permanent.
   void commit();
 
