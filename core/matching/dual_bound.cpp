@@ -63,6 +63,26 @@ std::size_t spanned_nodes(const MatchingProblem& problem, std::span<const std::u
   return static_cast<std::size_t>(std::unique(nodes.begin(), nodes.end()) - nodes.begin());
 }
 
+// What x_g = 1 for g in `ones` and x_f = 0 for f in `zeros` add to L: each term of
+// sum_e min(0, d_e) becomes d_g or 0.
+double surplus(std::span<const std::uint32_t> ones, std::span<const std::uint32_t> zeros,
+               const std::vector<double>& d) {
+  double sum = 0.0;
+  for (std::uint32_t g : ones) sum += std::max(d[g], 0.0);
+  for (std::uint32_t f : zeros) sum += std::max(-d[f], 0.0);
+  return sum;
+}
+
+// The same for the edges that `values` fixes.
+double surplus(const std::vector<Fixed>& values, const std::vector<double>& d) {
+  double sum = 0.0;
+  for (std::size_t e = 0; e < values.size(); ++e) {
+    if (values[e] == Fixed::one) sum += std::max(d[e], 0.0);
+    if (values[e] == Fixed::zero) sum += std::max(-d[e], 0.0);
+  }
+  return sum;
+}
+
 // The problem as a part of itself.
 Component whole(const MatchingProblem& problem) {
   Component part;
@@ -131,20 +151,31 @@ std::vector<std::uint8_t> edges_below(const MatchingProblem& problem,
                                       double cost) {
   const double gap = cost - bound.bound;
   const std::vector<double>& d = bound.reduced_costs;
-  std::vector<std::uint8_t> allowed(d.size(), 1);
   Propagation propagation(problem, adjacency.incident, adjacency.exclusive);
-  for (std::uint32_t e = 0; e < allowed.size(); ++e) {
-    if (-d[e] > gap)  // leaving e out costs at least L - d: e is in, its excluded out
-      for (std::uint32_t f : adjacency.exclusive.of(e)) allowed[f] = 0;
-    if (!propagation.try_one(e)) {  // no matching uses e
-      allowed[e] = 0;
-      continue;
+  for (std::uint32_t e = 0; e < d.size() && !propagation.infeasible(); ++e) {
+    if (-d[e] <= gap || propagation.values()[e] != Fixed::free) continue;
+    if (propagation.try_one(e)) {  // leaving e out costs at least L - d_e: e is in
+      propagation.commit();
+    } else {
+      propagation.fix_zero(e);  // which makes it infeasible
     }
-    double using_e = 0.0;  // over L
-    for (std::uint32_t g : propagation.forced()) using_e += std::max(d[g], 0.0);
-    for (std::uint32_t f : propagation.dropped()) using_e += std::max(-d[f], 0.0);
-    if (using_e > gap) allowed[e] = 0;
   }
+  for (bool changed = true; changed && !propagation.infeasible();) {
+    changed = false;
+    const double fixed = surplus(propagation.values(), d);
+    if (fixed > gap) break;
+    for (std::uint32_t e = 0; e < d.size() && !propagation.infeasible(); ++e) {
+      if (propagation.values()[e] != Fixed::free) continue;
+      if (!propagation.try_one(e) ||
+          fixed + surplus(propagation.forced(), propagation.dropped(), d) > gap) {
+        propagation.fix_zero(e);
+        changed = true;
+      }
+    }
+  }
+  std::vector<std::uint8_t> allowed(d.size(), 0);
+  if (propagation.infeasible() || surplus(propagation.values(), d) > gap) return allowed;
+  for (std::uint32_t e = 0; e < d.size(); ++e) allowed[e] = propagation.values()[e] != Fixed::zero;
   return allowed;
 }
 

@@ -12,9 +12,12 @@
 //   edge of O(e), and so on), or ends in a contradiction; then
 //   w x >= L + sum_{g in O(e)} max(0, d_g) + sum_{f in Z(e)} max(0, -d_f).
 // So no such matching uses an edge with a contradiction or with that sum > cost, nor an edge
-// that excludes an edge e with L - d_e > cost. The instance without those edges has every
-// matching of cost <= `cost`: the same optimum, if that costs no more. Its purpose: second solvers
-// (GLPK, CBC) that cannot solve the whole instance can confirm the optimum on what is left.
+// that excludes an edge e with L - d_e > cost. Each edge ruled out is fixed to 0 and propagated
+// for the edges after it, in passes until none is ruled out; the edges so fixed (to 0, or to 1
+// where a port is left with one edge) add their terms to L for every edge's test. The instance
+// without those edges has every matching of cost <= `cost`: the same optimum, if that costs no
+// more. Its purpose: second solvers (GLPK, CBC) that cannot solve the whole instance can confirm
+// the optimum on what is left.
 #pragma once
 
 #include <cstdint>
