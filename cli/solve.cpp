@@ -51,8 +51,9 @@ void print_reduce_help() {
       "                      [--time-limit S]\n\n"
       "Writes program P1 without the edges that no matching of cost COST or less can use: the\n"
       "dual of its LP relaxation (degree, clique and odd-set rows), checked row by row against\n"
-      "the instance, bounds every matching's cost by its reduced costs (reduced-cost fixing);\n"
-      "rounds on what is left, whose relaxation is tighter, while one rules out an edge.\n"
+      "the instance, bounds every matching's cost by its reduced costs (reduced-cost fixing,\n"
+      "with what propagation forces per edge), and per edge with it fixed in (probing); rounds\n"
+      "on what is left, whose relaxation is tighter, while one rules out an edge.\n"
       "The instance written has every matching of cost <= COST, so its optimum is the\n"
       "instance's whenever that costs no more than COST: a solver too slow for the whole\n"
       "instance can confirm an optimum on it.\n\n"
@@ -159,11 +160,11 @@ int reduce_command(const Args& args) {
   write_file_bytes(output,
                    as_lp ? matching::write_instance_lp(left) : matching::write_instance_json(left));
   std::printf(
-      "%s: below %s, %zu of %zu edges and %zu of %zu conflict pairs are left after %d rounds, "
-      "in %s; their checked lower bound %s\n",
+      "%s: below %s, %zu of %zu edges and %zu of %zu conflict pairs are left after %d rounds "
+      "(%zu edges ruled out by probing), in %s; their checked lower bound %s\n",
       path.c_str(), number_text(cost).c_str(), left.edges.size(), problem.edges.size(),
-      left.conflicts.size(), problem.conflicts.size(), reduction.rounds, output.c_str(),
-      number_text(reduction.bound.bound).c_str());
+      left.conflicts.size(), problem.conflicts.size(), reduction.rounds, reduction.probed,
+      output.c_str(), number_text(reduction.bound.bound).c_str());
   return 0;
 }
 

@@ -473,6 +473,33 @@ TEST(MatchingDualBound, RulesOutOnlyEdgesThatNoMatchingBelowTheCostUses) {
   EXPECT_GT(more_rounds, 0);   // a round on what is left rules out more
 }
 
+// On planted instances dense in conflicts, whose root relaxation leaves a gap (the search
+// branches), probing rules out edges that the fixing keeps; what is left keeps an optimal
+// matching, and GLPK finds the same optimum on it.
+TEST(MatchingDualBound, ProbingRulesOutMoreAndWhatIsLeftKeepsTheOptimum) {
+  std::size_t probed = 0;
+  for (std::uint32_t seed = 1; seed <= 6; ++seed) {
+    PlantedSpec spec;
+    spec.ports = 40;
+    spec.extra_edges = 120;
+    spec.conflicts = 320;
+    spec.seed = seed;
+    const MatchingProblem p = planted_instance(spec);
+    const MatchingResult exact = solve_matching(p, SolverKind::exact, 60.0);
+    ASSERT_EQ(exact.status, SolveStatus::optimal) << "seed " << seed;
+    const Reduction reduction =
+        reduce_below(p, exact.objective + 1e-7 * std::abs(exact.objective), 60.0);
+    std::vector<std::uint8_t> left(p.edges.size(), 0);
+    for (std::uint32_t e : reduction.part.edge_of) left[e] = 1;
+    for (std::uint32_t e : exact.edges) EXPECT_TRUE(left[e]) << "seed " << seed << " edge " << e;
+    const MatchingResult glpk = solve_matching(reduction.part.problem, SolverKind::glpk, 60.0);
+    EXPECT_EQ(glpk.status, SolveStatus::optimal) << "seed " << seed;
+    EXPECT_NEAR(glpk.objective, exact.objective, 1e-9) << "seed " << seed;
+    probed += reduction.probed;
+  }
+  EXPECT_GT(probed, 0u);
+}
+
 // A square 0-1-2-3 (edges 0-1, 2-3, 1-2, 0-3, weight 1) and a virtual port 4 joined to 3.
 MatchingProblem square_with_a_virtual_port() {
   MatchingProblem p;

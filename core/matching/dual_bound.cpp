@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <span>
 
@@ -83,6 +84,60 @@ double surplus(const std::vector<Fixed>& values, const std::vector<double>& d) {
   return sum;
 }
 
+using Clock = std::chrono::steady_clock;
+
+double seconds_until(Clock::time_point deadline) {
+  return std::chrono::duration<double>(deadline - Clock::now()).count();
+}
+
+// The relaxation at its optimum after the cut rounds, or after `seconds`.
+std::unique_ptr<LpRelaxation> solved_relaxation(const MatchingProblem& problem,
+                                                const ProblemAdjacency& adjacency, double seconds) {
+  auto lp = std::make_unique<LpRelaxation>(problem, adjacency.incident,
+                                           clique_cover(adjacency.exclusive, adjacency.conflicts));
+  lp->solve_with_cuts(adjacency.exclusive, std::numeric_limits<double>::infinity(), seconds,
+                      kCutRounds);
+  return lp;
+}
+
+// What x_e = 1 adds to L by propagation: the surplus of the edges it forces and drops, or
+// infinity if it ends in a contradiction.
+double using_edge(Propagation& propagation, std::uint32_t e, const std::vector<double>& d) {
+  if (!propagation.try_one(e)) return std::numeric_limits<double>::infinity();
+  return surplus(propagation.forced(), propagation.dropped(), d);
+}
+
+// Probing by the relaxation: per edge `allowed` keeps, those of the largest reduced cost first,
+// the relaxation `lp` (at its optimum) with x_e = 1, stopped once its bound passes `cost`; e goes
+// where that LP's dual, checked, with what x_e = 1 propagates, bounds every matching with e above
+// `cost`. Until `deadline`; returns how many went.
+std::size_t probe_by_relaxation(const MatchingProblem& problem, const ProblemAdjacency& adjacency,
+                                LpRelaxation& lp, const std::vector<double>& reduced, double cost,
+                                Clock::time_point deadline, std::vector<std::uint8_t>& allowed) {
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t e = 0; e < allowed.size(); ++e)
+    if (allowed[e]) order.push_back(e);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return reduced[a] > reduced[b]; });
+  const LpBasis optimum = lp.basis();
+  Propagation propagation(problem, adjacency.incident, adjacency.exclusive);
+  std::size_t ruled_out = 0;
+  for (std::uint32_t e : order) {
+    const double seconds = seconds_until(deadline);
+    if (seconds <= 0) break;
+    lp.set_bounds(e, 1, 1);
+    lp.solve_with_cuts(adjacency.exclusive, cost, seconds, 0);
+    const CheckedBound with_e = check_dual_bound(problem, adjacency, lp.dual_rows());
+    lp.set_bounds(e, 0, 1);
+    lp.restore(optimum);
+    if (with_e.valid && with_e.bound + using_edge(propagation, e, with_e.reduced_costs) > cost) {
+      allowed[e] = 0;
+      ++ruled_out;
+    }
+  }
+  return ruled_out;
+}
+
 // The problem as a part of itself.
 Component whole(const MatchingProblem& problem) {
   Component part;
@@ -139,11 +194,7 @@ CheckedBound check_dual_bound(const MatchingProblem& problem, const ProblemAdjac
 
 std::vector<DualRow> relaxation_dual(const MatchingProblem& problem,
                                      const ProblemAdjacency& adjacency, double seconds) {
-  LpRelaxation lp(problem, adjacency.incident,
-                  clique_cover(adjacency.exclusive, adjacency.conflicts));
-  lp.solve_with_cuts(adjacency.exclusive, std::numeric_limits<double>::infinity(), seconds,
-                     kCutRounds);
-  return lp.dual_rows();
+  return solved_relaxation(problem, adjacency, seconds)->dual_rows();
 }
 
 std::vector<std::uint8_t> edges_below(const MatchingProblem& problem,
@@ -166,8 +217,7 @@ std::vector<std::uint8_t> edges_below(const MatchingProblem& problem,
     if (fixed > gap) break;
     for (std::uint32_t e = 0; e < d.size() && !propagation.infeasible(); ++e) {
       if (propagation.values()[e] != Fixed::free) continue;
-      if (!propagation.try_one(e) ||
-          fixed + surplus(propagation.forced(), propagation.dropped(), d) > gap) {
+      if (fixed + using_edge(propagation, e, d) > gap) {
         propagation.fix_zero(e);
         changed = true;
       }
@@ -180,25 +230,30 @@ std::vector<std::uint8_t> edges_below(const MatchingProblem& problem,
 }
 
 Reduction reduce_below(const MatchingProblem& problem, double cost, double seconds) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  constexpr double kLongest = 1e7;  // seconds: a deadline the clock can hold
+  const Clock::time_point deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                         std::chrono::duration<double>(std::min(seconds, kLongest)));
   Reduction reduction;
   reduction.part = whole(problem);
   for (;;) {
     const MatchingProblem& left = reduction.part.problem;
     const ProblemAdjacency adjacency = adjacency_of(left);
-    const double remaining =
-        std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
-    reduction.bound =
-        check_dual_bound(left, adjacency, relaxation_dual(left, adjacency, remaining));
+    const std::unique_ptr<LpRelaxation> lp =
+        solved_relaxation(left, adjacency, seconds_until(deadline));
+    reduction.bound = check_dual_bound(left, adjacency, lp->dual_rows());
     ++reduction.rounds;
     if (!reduction.bound.valid)
       throw Error("the relaxation's dual rows failed their check: " + reduction.bound.error);
-    const std::vector<std::uint8_t> allowed = edges_below(left, adjacency, reduction.bound, cost);
+    std::vector<std::uint8_t> allowed = edges_below(left, adjacency, reduction.bound, cost);
+    if (std::find(allowed.begin(), allowed.end(), 0) == allowed.end())
+      reduction.probed += probe_by_relaxation(left, adjacency, *lp, reduction.bound.reduced_costs,
+                                              cost, deadline, allowed);
     if (std::find(allowed.begin(), allowed.end(), 0) == allowed.end()) break;
     Component next = open_part(left, adjacency.conflicts, {}, allowed);
     for (std::uint32_t& e : next.edge_of) e = reduction.part.edge_of[e];
     reduction.part = std::move(next);
-    if (std::chrono::steady_clock::now() >= deadline) break;
+    if (Clock::now() >= deadline) break;
   }
   return reduction;
 }
