@@ -161,7 +161,7 @@ int reduce_command(const Args& args) {
                    as_lp ? matching::write_instance_lp(left) : matching::write_instance_json(left));
   std::printf(
       "%s: below %s, %zu of %zu edges and %zu of %zu conflict pairs are left after %d rounds "
-      "(%zu edges ruled out by probing), in %s; their checked lower bound %s\n",
+      "(%zu edges fixed by probing), in %s; their checked lower bound %s\n",
       path.c_str(), number_text(cost).c_str(), left.edges.size(), problem.edges.size(),
       left.conflicts.size(), problem.conflicts.size(), reduction.rounds, reduction.probed,
       output.c_str(), number_text(reduction.bound.bound).c_str());

@@ -452,21 +452,23 @@ TEST(MatchingDualBound, RulesOutOnlyEdgesThatNoMatchingBelowTheCostUses) {
         if (matching.cost <= cost)
           for (std::uint32_t e : matching.edges) EXPECT_TRUE(allowed[e]) << what << " edge " << e;
     }
-    const Reduction reduction = reduce_below(p, optimum, 10.0);
-    const Component& part = reduction.part;
-    EXPECT_EQ(part.problem.is_virtual, p.is_virtual) << what;
-    EXPECT_EQ(brute_force_optimum(part.problem), optimum) << what;
-    EXPECT_LE(reduction.bound.bound, optimum) << what;
-    std::vector<std::uint8_t> left(p.edges.size(), 0);
-    for (std::uint32_t i = 0; i < part.edge_of.size(); ++i) {
-      const MatchingEdge &kept = part.problem.edges[i], &edge = p.edges[part.edge_of[i]];
-      EXPECT_TRUE(kept.u == edge.u && kept.v == edge.v && kept.weight == edge.weight) << what;
-      left[part.edge_of[i]] = 1;
+    for (const double cost : {optimum, optimum + 2.0}) {
+      const Reduction reduction = reduce_below(p, cost, 10.0);
+      const Component& part = reduction.part;
+      EXPECT_EQ(part.problem.is_virtual, p.is_virtual) << what;
+      EXPECT_EQ(brute_force_optimum(part.problem), optimum) << what;
+      EXPECT_LE(reduction.bound.bound, optimum) << what;
+      std::vector<std::uint8_t> left(p.edges.size(), 0);
+      for (std::uint32_t i = 0; i < part.edge_of.size(); ++i) {
+        const MatchingEdge &kept = part.problem.edges[i], &edge = p.edges[part.edge_of[i]];
+        EXPECT_TRUE(kept.u == edge.u && kept.v == edge.v && kept.weight == edge.weight) << what;
+        left[part.edge_of[i]] = 1;
+      }
+      for (const Matching& matching : matchings)
+        if (matching.cost <= cost)
+          for (std::uint32_t e : matching.edges) EXPECT_TRUE(left[e]) << what << " edge " << e;
+      more_rounds += reduction.rounds > 2;
     }
-    for (const Matching& matching : matchings)
-      if (matching.cost <= optimum)
-        for (std::uint32_t e : matching.edges) EXPECT_TRUE(left[e]) << what << " edge " << e;
-    more_rounds += reduction.rounds > 2;
   }
   EXPECT_GT(ruled_out, 1000);  // the fixing does something
   EXPECT_GT(bounded, 100);     // and the bound is mostly within 1 of the optimum

@@ -107,35 +107,67 @@ double using_edge(Propagation& propagation, std::uint32_t e, const std::vector<d
   return surplus(propagation.forced(), propagation.dropped(), d);
 }
 
-// Probing by the relaxation: per edge `allowed` keeps, those of the largest reduced cost first,
-// the relaxation `lp` (at its optimum) with x_e = 1, stopped once its bound passes `cost`; e goes
-// where that LP's dual, checked, with what x_e = 1 propagates, bounds every matching with e above
-// `cost`. Until `deadline`; returns how many went.
+// One probe of the relaxation: the edge, the value it is fixed to, and the sign it has in the
+// reduced costs' test (the larger |d_e| on the side probed, the likelier it goes).
+struct Probe {
+  std::uint32_t edge = 0;
+  int value = 0;
+  double promise = 0.0;
+};
+
+// The probes of the free edges: x_e = 1 where the relaxation has x_e < 1, x_e = 0 where it has
+// x_e > 0; the most promising first.
+std::vector<Probe> probes_of(const LpRelaxation& lp, const std::vector<double>& d,
+                             const Propagation& propagation) {
+  constexpr double kAtBound = 1e-9;
+  std::vector<Probe> probes;
+  for (std::uint32_t e = 0; e < d.size(); ++e) {
+    if (propagation.values()[e] != Fixed::free) continue;
+    const double x = lp.values()[e];
+    if (x < 1.0 - kAtBound) probes.push_back({e, 1, d[e]});
+    if (x > kAtBound) probes.push_back({e, 0, -d[e]});
+  }
+  std::stable_sort(probes.begin(), probes.end(),
+                   [](const Probe& a, const Probe& b) { return a.promise > b.promise; });
+  return probes;
+}
+
+// Probing by the relaxation: per probe, the relaxation `lp` (at its optimum) with x_e fixed,
+// stopped once its bound passes `cost`. Where that LP's dual, checked, with what the fixing
+// propagates (x_e = 1) or its own reduced cost (x_e = 0), bounds every matching with that value
+// above `cost`, every matching of cost <= `cost` has the other: e is fixed to it in
+// `propagation`, with its consequences. Until `deadline`; returns how many edges were fixed.
 std::size_t probe_by_relaxation(const MatchingProblem& problem, const ProblemAdjacency& adjacency,
                                 LpRelaxation& lp, const std::vector<double>& reduced, double cost,
-                                Clock::time_point deadline, std::vector<std::uint8_t>& allowed) {
-  std::vector<std::uint32_t> order;
-  for (std::uint32_t e = 0; e < allowed.size(); ++e)
-    if (allowed[e]) order.push_back(e);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return reduced[a] > reduced[b]; });
+                                Clock::time_point deadline, Propagation& propagation) {
   const LpBasis optimum = lp.basis();
-  Propagation propagation(problem, adjacency.incident, adjacency.exclusive);
-  std::size_t ruled_out = 0;
-  for (std::uint32_t e : order) {
+  std::size_t fixed = 0;
+  for (const Probe& probe : probes_of(lp, reduced, propagation)) {
+    const std::uint32_t e = probe.edge;
     const double seconds = seconds_until(deadline);
-    if (seconds <= 0) break;
-    lp.set_bounds(e, 1, 1);
+    if (seconds <= 0 || propagation.infeasible()) break;
+    if (propagation.values()[e] != Fixed::free) continue;
+    lp.set_bounds(e, probe.value, probe.value);
     lp.solve_with_cuts(adjacency.exclusive, cost, seconds, 0);
-    const CheckedBound with_e = check_dual_bound(problem, adjacency, lp.dual_rows());
+    const CheckedBound probed = check_dual_bound(problem, adjacency, lp.dual_rows());
     lp.set_bounds(e, 0, 1);
     lp.restore(optimum);
-    if (with_e.valid && with_e.bound + using_edge(propagation, e, with_e.reduced_costs) > cost) {
-      allowed[e] = 0;
-      ++ruled_out;
+    if (!probed.valid) continue;
+    const std::vector<double>& d = probed.reduced_costs;
+    if (probe.value == 1 && probed.bound + using_edge(propagation, e, d) > cost) {
+      propagation.fix_zero(e);
+      ++fixed;
+    }
+    if (probe.value == 0 && probed.bound + std::max(-d[e], 0.0) > cost) {
+      if (propagation.try_one(e)) {
+        propagation.commit();
+      } else {
+        propagation.fix_zero(e);  // e is in every such matching, and cannot be: there is none
+      }
+      ++fixed;
     }
   }
-  return ruled_out;
+  return fixed;
 }
 
 // The problem as a part of itself.
@@ -246,9 +278,13 @@ Reduction reduce_below(const MatchingProblem& problem, double cost, double secon
     if (!reduction.bound.valid)
       throw Error("the relaxation's dual rows failed their check: " + reduction.bound.error);
     std::vector<std::uint8_t> allowed = edges_below(left, adjacency, reduction.bound, cost);
-    if (std::find(allowed.begin(), allowed.end(), 0) == allowed.end())
+    if (std::find(allowed.begin(), allowed.end(), 0) == allowed.end()) {
+      Propagation propagation(left, adjacency.incident, adjacency.exclusive);
       reduction.probed += probe_by_relaxation(left, adjacency, *lp, reduction.bound.reduced_costs,
-                                              cost, deadline, allowed);
+                                              cost, deadline, propagation);
+      for (std::uint32_t e = 0; e < allowed.size(); ++e)
+        allowed[e] = !propagation.infeasible() && propagation.values()[e] != Fixed::zero;
+    }
     if (std::find(allowed.begin(), allowed.end(), 0) == allowed.end()) break;
     Component next = open_part(left, adjacency.conflicts, {}, allowed);
     for (std::uint32_t& e : next.edge_of) e = reduction.part.edge_of[e];

@@ -73,14 +73,16 @@ std::vector<std::uint8_t> edges_below(const MatchingProblem& problem,
 // relaxation of what the rounds before left, checks its dual and drops the edges edges_below()
 // rules out; every matching of cost <= `cost` keeps clear of them, so it is in what is left, whose
 // relaxation is tighter. Where the fixing rules out none, probing: per edge, the relaxation with
-// x_e = 1, its dual checked (with what x_e = 1 propagates) as above; the edges that bound
-// exceeds `cost` for go. The rounds go on while one drops an edge and `seconds` last. `bound` is
-// the last round's: a lower bound on every matching of cost <= `cost`.
+// x_e = 1 (where it has x_e < 1) and with x_e = 0 (where it has x_e > 0), its dual checked as
+// above (with what x_e = 1 propagates, or with e's own reduced cost for x_e = 0); where that bound
+// exceeds `cost`, e is fixed to the other value, with what that propagates. The rounds go on while
+// one drops an edge and `seconds` last. `bound` is the last round's: a lower bound on every
+// matching of cost <= `cost`.
 struct Reduction {
   CheckedBound bound;
   Component part;
   int rounds = 0;
-  std::size_t probed = 0;  // edges ruled out by probing
+  std::size_t probed = 0;  // edges fixed by probing (to 0, or to 1 with their consequences)
 };
 Reduction reduce_below(const MatchingProblem& problem, double cost, double seconds);
 
