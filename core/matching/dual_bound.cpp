@@ -107,6 +107,16 @@ double using_edge(Propagation& propagation, std::uint32_t e, const std::vector<d
   return surplus(propagation.forced(), propagation.dropped(), d);
 }
 
+// Per edge, 0 where `propagation` fixed it to 0; all 0 where it ended in a contradiction (no
+// matching below the cost exists).
+std::vector<std::uint8_t> edges_not_fixed_to_zero(const Propagation& propagation) {
+  const std::vector<Fixed>& values = propagation.values();
+  std::vector<std::uint8_t> allowed(values.size(), 0);
+  if (propagation.infeasible()) return allowed;
+  for (std::size_t e = 0; e < values.size(); ++e) allowed[e] = values[e] != Fixed::zero;
+  return allowed;
+}
+
 // One probe of the relaxation: the edge, the value it is fixed to, and the sign it has in the
 // reduced costs' test (the larger |d_e| on the side probed, the likelier it goes).
 struct Probe {
@@ -162,7 +172,7 @@ std::size_t probe_by_relaxation(const MatchingProblem& problem, const ProblemAdj
       if (propagation.try_one(e)) {
         propagation.commit();
       } else {
-        propagation.fix_zero(e);  // e is in every such matching, and cannot be: there is none
+        propagation.fix_zero(e);  // e is in every such matching and cannot be: there is none
       }
       ++fixed;
     }
@@ -255,10 +265,8 @@ std::vector<std::uint8_t> edges_below(const MatchingProblem& problem,
       }
     }
   }
-  std::vector<std::uint8_t> allowed(d.size(), 0);
-  if (propagation.infeasible() || surplus(propagation.values(), d) > gap) return allowed;
-  for (std::uint32_t e = 0; e < d.size(); ++e) allowed[e] = propagation.values()[e] != Fixed::zero;
-  return allowed;
+  if (surplus(propagation.values(), d) > gap) return std::vector<std::uint8_t>(d.size(), 0);
+  return edges_not_fixed_to_zero(propagation);
 }
 
 Reduction reduce_below(const MatchingProblem& problem, double cost, double seconds) {
@@ -282,8 +290,7 @@ Reduction reduce_below(const MatchingProblem& problem, double cost, double secon
       Propagation propagation(left, adjacency.incident, adjacency.exclusive);
       reduction.probed += probe_by_relaxation(left, adjacency, *lp, reduction.bound.reduced_costs,
                                               cost, deadline, propagation);
-      for (std::uint32_t e = 0; e < allowed.size(); ++e)
-        allowed[e] = !propagation.infeasible() && propagation.values()[e] != Fixed::zero;
+      allowed = edges_not_fixed_to_zero(propagation);
     }
     if (std::find(allowed.begin(), allowed.end(), 0) == allowed.end()) break;
     Component next = open_part(left, adjacency.conflicts, {}, allowed);
