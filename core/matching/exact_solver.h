@@ -11,14 +11,14 @@
 //     a component of 10,000 edges or more, one round of GLPK's Gomory cuts raises the bound, when
 //     the time left is 8 times what the LP took (else the search starts without them).
 //  6. The incumbent to start from: the better of a Lagrangian repair (incumbent.h) and the optimum
-//     of the smaller P1 left once the LP's edges at 1 are kept (RENS, exact_solver.cpp); a dive
-//     (incumbent.h) only when neither finds one. On fertility's 41 slider positions the dive was
-//     never better than both, yet took 5 to 16 ms of every root that went on to a search; without
-//     it the same trees, P1 summed 1,383 -> 1,104 ms (bunny 801 -> 705, rocker-arm 350 -> 307).
-//     Then the part of P1 that holds every matching no dearer than it, or than the LP bound plus
-//     0.02 % if that is less, is solved exactly within a node limit (solve_below_cutoff()): an
-//     optimum within that cutoff is P1's, and no search follows; otherwise the part's best may
-//     still be a better incumbent.
+//     of the smaller P1 left once the LP's edges at 1 are kept (RENS, exact_solver.cpp). Then the
+//     part of P1 that holds every matching no dearer than it, or than the LP bound plus 0.02 % if
+//     that is less, is solved exactly within a node limit (solve_below_cutoff()): an optimum within
+//     that cutoff is P1's, and no search follows; otherwise the part's best may still be a better
+//     incumbent. A dive (incumbent.h) only when none of these finds one. On fertility's 41 slider
+//     positions the dive was never better than the first two, yet took 5 to 16 ms of every root
+//     that went on to a search; without it the same trees, P1 summed 1,383 -> 1,104 ms (bunny 801
+//     -> 705, rocker-arm 350 -> 307).
 //  7. LP-based branch-and-bound with reduced-cost fixing closes the gap (branch_and_bound.h).
 // Deterministic: the same instance gives the same matching, whatever the machine, unless the time
 // limit stops it or leaves no time for the Gomory cuts.
