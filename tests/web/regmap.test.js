@@ -68,12 +68,10 @@ describe('catalog search', () => {
     for (const name of ['R3', 'R3.2', "R3.1''", 'R999.1']) expect(findMap(ROWS, name), name).toBeUndefined();
   });
 
-  it('searches 3,378 rows in well under a frame', () => {
+  it('filters 3,378 rows by type and genus range', () => {
     const many = Array.from({ length: 3378 }, (_, i) => row(`R${2 + (i % 100)}.${1 + Math.floor(i / 100)}`, 2 + (i % 100), 3, 7 + (i % 9), 4 * i, 1, i, 1));
     const { query } = parseQuery({ type: '8,3', genus: '2-60' });
-    const started = performance.now();
     const found = filterCatalog(many, query);
-    expect(performance.now() - started).toBeLessThan(16);
     expect(found.length).toBe(many.filter((r) => r.q === 8 && r.genus <= 60).length);
     expect(found.every((entry) => entry.name.endsWith("'") && entry.p === 8)).toBe(true);
   });

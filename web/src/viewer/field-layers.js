@@ -1,25 +1,14 @@
 // Three.js objects for the cross field: the crosses as line segments and the singularities as
 // spheres coloured by valence. Each object owns its geometry and material.
-import {
-  BufferAttribute,
-  BufferGeometry,
-  Color,
-  InstancedMesh,
-  LineBasicMaterial,
-  LineSegments,
-  Matrix4,
-  MeshStandardMaterial,
-  SphereGeometry,
-} from 'three';
+import { Color, InstancedMesh, Matrix4, MeshStandardMaterial, SphereGeometry } from 'three';
+import { segmentLines } from './geometry.js';
 import { valenceColor } from './palette.js';
 
 export const CROSS_COLOR = '#26324a';
 
 /** Line segments from pairs of points (Float32Array, 6 numbers per segment). */
 export function crossLines(glyphs) {
-  const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new BufferAttribute(glyphs, 3));
-  return new LineSegments(geometry, new LineBasicMaterial({ color: CROSS_COLOR }));
+  return segmentLines(glyphs, CROSS_COLOR);
 }
 
 /** A sphere of `radius` at each point (Float32Array, 3 per point) in the colour of its valence. */

@@ -1,17 +1,12 @@
 // Three.js objects for a quad layout: the refined mesh coloured by patch and the arcs as lines
 // (the singularities use field-layers.js). Each object owns its geometry and material.
-import { BufferAttribute, BufferGeometry, DoubleSide, LineBasicMaterial, LineSegments, Mesh, MeshStandardMaterial } from 'three';
+import { DoubleSide, Mesh, MeshStandardMaterial } from 'three';
+import { segmentLines, surfaceGeometry } from './geometry.js';
 
 export const ARC_COLOR = '#111318';
 
 /** The patches: { positions, normals, colors, triangles } from the worker (layout-display.js). */
 export function patchMesh(surface) {
-  const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new BufferAttribute(surface.positions, 3));
-  geometry.setAttribute('normal', new BufferAttribute(surface.normals, 3));
-  geometry.setAttribute('color', new BufferAttribute(surface.colors, 3));
-  geometry.setIndex(new BufferAttribute(surface.triangles, 1));
-  geometry.computeBoundingSphere();
   const material = new MeshStandardMaterial({
     vertexColors: true,
     roughness: 0.7,
@@ -22,12 +17,10 @@ export function patchMesh(surface) {
     polygonOffsetFactor: 1,
     polygonOffsetUnits: 1,
   });
-  return new Mesh(geometry, material);
+  return new Mesh(surfaceGeometry(surface), material);
 }
 
 /** The arcs: line segments (Float32Array, 6 numbers per segment). */
 export function arcLines(segments) {
-  const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new BufferAttribute(segments, 3));
-  return new LineSegments(geometry, new LineBasicMaterial({ color: ARC_COLOR }));
+  return segmentLines(segments, ARC_COLOR);
 }

@@ -16,6 +16,7 @@ import {
   WebGLRenderer,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { surfaceGeometry } from './geometry.js';
 import { uvTexture } from './textures.js';
 
 export const BACKGROUND = '#23272e';
@@ -87,11 +88,7 @@ export class Viewer {
   /** Shows a mesh from the worker ({ positions, triangles, normals, edges }) and frames it. */
   showMesh({ positions, triangles, normals, edges }) {
     this.clear();
-    const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new BufferAttribute(positions, 3));
-    geometry.setAttribute('normal', new BufferAttribute(normals, 3));
-    geometry.setIndex(new BufferAttribute(triangles, 1));
-    geometry.computeBoundingSphere();
+    const geometry = surfaceGeometry({ positions, normals, triangles });
     this.surface = new Mesh(geometry, this.material);
 
     const edgeGeometry = new BufferGeometry();
@@ -112,12 +109,7 @@ export class Viewer {
     remove(this.coloredSurface);
     this.coloredSurface = null;
     if (!surface) return this.setBounds('surface', null);
-    const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new BufferAttribute(surface.positions, 3));
-    geometry.setAttribute('normal', new BufferAttribute(surface.normals, 3));
-    geometry.setAttribute('color', new BufferAttribute(surface.colors, 3));
-    geometry.setIndex(new BufferAttribute(surface.triangles, 1));
-    geometry.computeBoundingSphere();
+    const geometry = surfaceGeometry(surface);
     this.coloredSurface = new Mesh(geometry, this.coloredMaterial);
     this.scenes.get('surface').root.add(this.coloredSurface);
     this.setBounds('surface', geometry.boundingSphere);
@@ -183,11 +175,7 @@ export class Viewer {
     remove(this.uvSurface);
     this.uvSurface = null;
     if (corners) {
-      const geometry = new BufferGeometry();
-      geometry.setAttribute('position', new BufferAttribute(corners.positions, 3));
-      geometry.setAttribute('normal', new BufferAttribute(corners.normals, 3));
-      geometry.setAttribute('uv', new BufferAttribute(corners.uv, 2));
-      this.uvSurface = new Mesh(geometry, this.texturedMaterial);
+      this.uvSurface = new Mesh(surfaceGeometry(corners), this.texturedMaterial);
       this.meshRoot().add(this.uvSurface);
     }
     this.showTexture();
