@@ -63,18 +63,18 @@ constexpr std::size_t kSpineMaxJunctions = 64;
 // When the relaxed surface crosses itself, the spine placement replaces it if the graph has one and
 // its surface crosses itself less.
 void try_spine(const LineGraph& line, const JunctionOrder& order, const TubeShape& shape,
-               const Limits& limits, const Progress& progress, Placement& chosen, Mesh& mesh,
-               std::size_t& self_intersections) {
+               const Limits& limits, const Progress& progress, Placement& chosen,
+               TubifiedSurface& surface, std::size_t& self_intersections) {
   if (line.graph.node_count > kSpineMaxJunctions) return;
   std::optional<SymmetricPlacement> spine = spine_placement(line.graph, order, shape);
   if (!spine) return;
-  Mesh other = tubify(spine->embedded, line, order, shape, limits.max_faces);
-  const std::size_t crossings = find_self_intersections(other, progress).triangle_pairs;
+  TubifiedSurface other = tubify(spine->embedded, line, order, shape, limits.max_faces);
+  const std::size_t crossings = find_self_intersections(other.mesh, progress).triangle_pairs;
   if (crossings >= self_intersections) return;
   chosen.embedded = std::move(spine->embedded);
   chosen.base = spine->name;
   chosen.symmetries = std::move(spine->symmetries);
-  mesh = std::move(other);
+  surface = std::move(other);
   self_intersections = crossings;
 }
 
@@ -138,15 +138,16 @@ RegularSurface build_regular_surface(const Presentation& presentation, const Fin
   RegularSurface surface;
   Placement chosen = placement;
   progress.step("tubification", 0.0);
-  surface.mesh = tubify(placement.embedded, line, order, shape, limits.max_faces);
+  TubifiedSurface tubified = tubify(placement.embedded, line, order, shape, limits.max_faces);
   SurfaceStats& stats = surface.stats;
   if (options.find_self_intersections) {
-    stats.self_intersections = find_self_intersections(surface.mesh, progress).triangle_pairs;
+    stats.self_intersections = find_self_intersections(tubified.mesh, progress).triangle_pairs;
     stats.self_intersections_searched = true;
     if (stats.self_intersections > 0 && options.base == SurfaceBase::Automatic)
-      try_spine(line, order, shape, limits, progress, chosen, surface.mesh,
-                stats.self_intersections);
+      try_spine(line, order, shape, limits, progress, chosen, tubified, stats.self_intersections);
   }
+  surface.mesh = std::move(tubified.mesh);
+  surface.grids = std::move(tubified.grids);
   stats.base = chosen.base;
   stats.relaxation = placement.relaxation;
   stats.junctions = line.graph.node_count;

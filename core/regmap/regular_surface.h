@@ -70,7 +70,8 @@ struct SurfaceStats {
 
 struct RegularSurface {
   Mesh mesh;
-  SurfaceGroup group;  // A, B, C read off the mesh
+  std::vector<QuarterTubeGrid> grids;  // per quarter tube (group element): its quad grid
+  SurfaceGroup group;                  // A, B, C read off the mesh
   SurfaceStats stats;
 };
 

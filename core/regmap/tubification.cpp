@@ -304,8 +304,18 @@ void place_tubes(const std::vector<std::vector<Ring>>& rings, const TubeShape& s
 // the quarter tube's hole is counterclockwise about the top normal on the left, clockwise on the
 // right.
 void add_quarter_tube(const SurfaceLayout& layout, std::int32_t dart, bool left, Element tile,
-                      const TubeShape& shape, Mesh& mesh, std::vector<std::int32_t>& tiles) {
+                      const TubeShape& shape, TubifiedSurface& surface,
+                      std::vector<std::int32_t>& tiles) {
   const int columns = layout.columns(dart);
+  QuarterTubeGrid& grid = surface.grids[static_cast<std::size_t>(tile)];
+  grid.columns = columns;
+  grid.across = shape.across;
+  grid.counterclockwise = left;
+  for (int i = 0; i <= columns; ++i) {
+    for (int j = 0; j <= shape.across; ++j)
+      grid.vertex.push_back(layout.quarter_tube_vertex(dart, left, i, j));
+  }
+  Mesh& mesh = surface.mesh;
   for (int i = 0; i < columns; ++i) {
     for (int j = 0; j < shape.across; ++j) {
       const Index a = layout.quarter_tube_vertex(dart, left, i, j);
@@ -355,8 +365,8 @@ TubeShape tube_shape(const TubeOptions& options, int valence) {
   return shape;
 }
 
-Mesh tubify(const EmbeddedGraph& embedded, const LineGraph& line, const JunctionOrder& order,
-            const TubeShape& shape, std::size_t max_faces) {
+TubifiedSurface tubify(const EmbeddedGraph& embedded, const LineGraph& line,
+                       const JunctionOrder& order, const TubeShape& shape, std::size_t max_faces) {
   const EdgeGraph& graph = line.graph;
   std::vector<std::vector<Ring>> rings;
   std::vector<int> along;
@@ -368,7 +378,9 @@ Mesh tubify(const EmbeddedGraph& embedded, const LineGraph& line, const Junction
   }
   check_limit(faces, max_faces, "the regular surface's mesh (faces)", "--max-faces");
   const SurfaceLayout layout(graph, order, shape, std::move(along));
-  Mesh mesh;
+  TubifiedSurface surface;
+  surface.grids.resize(graph.dart_element.size() * 2);
+  Mesh& mesh = surface.mesh;
   mesh.positions.assign(layout.vertex_count(), Vector3d::Zero());
   place_junctions(embedded, graph, order, shape, layout, mesh.positions);
   place_tubes(rings, shape, layout, mesh.positions);
@@ -376,12 +388,12 @@ Mesh tubify(const EmbeddedGraph& embedded, const LineGraph& line, const Junction
   for (std::size_t d = 0; d < graph.dart_element.size(); ++d) {
     const Element g = graph.dart_element[d];
     const auto dart = static_cast<std::int32_t>(d);
-    add_quarter_tube(layout, dart, true, g, shape, mesh, tiles);
-    add_quarter_tube(layout, dart, false, line.partner[static_cast<std::size_t>(g)], shape, mesh,
+    add_quarter_tube(layout, dart, true, g, shape, surface, tiles);
+    add_quarter_tube(layout, dart, false, line.partner[static_cast<std::size_t>(g)], shape, surface,
                      tiles);
   }
   mesh.face_attributes[kTileAttribute] = std::move(tiles);
-  return mesh;
+  return surface;
 }
 
 }  // namespace tessera::regmap

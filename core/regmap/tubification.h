@@ -54,9 +54,27 @@ struct TubeShape {
 // not positive and finite, or a smoothness outside 2..32.
 TubeShape tube_shape(const TubeOptions& options, int valence);
 
+// The quad grid of one quarter tube: vertex (i, j) is vertex[i * (across + 1) + j], i from side a
+// at the junction (0) to side c at the edge's midpoint (columns), j from the top seam b (0) to the
+// bottom seam d (across). Its quads run counterclockwise seen from outside in the (i, j) plane
+// when `counterclockwise` (the quarter tube left of its dart), clockwise otherwise. Neighbouring
+// quarter tubes share the vertices of their common side at the same i (seams) or j (sides a, c).
+struct QuarterTubeGrid {
+  int columns = 0;
+  int across = 0;
+  bool counterclockwise = true;
+  std::vector<Index> vertex;
+  Index at(int i, int j) const { return vertex[static_cast<std::size_t>(i * (across + 1) + j)]; }
+};
+
+struct TubifiedSurface {
+  Mesh mesh;
+  std::vector<QuarterTubeGrid> grids;  // per tile: its group element
+};
+
 // Faces: 4 * across * (junction + along_e) quads per edge e, where along_e >= along grows with the
 // length of e's tube. Throws LimitError when they are more than max_faces.
-Mesh tubify(const EmbeddedGraph& embedded, const LineGraph& line, const JunctionOrder& order,
-            const TubeShape& shape, std::size_t max_faces);
+TubifiedSurface tubify(const EmbeddedGraph& embedded, const LineGraph& line,
+                       const JunctionOrder& order, const TubeShape& shape, std::size_t max_faces);
 
 }  // namespace tessera::regmap

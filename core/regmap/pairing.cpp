@@ -1,0 +1,408 @@
+#include "regmap/pairing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <set>
+#include <tuple>
+
+#include "base/error.h"
+
+namespace tessera::regmap {
+
+using enum Letter;
+
+namespace {
+
+constexpr double kLengthTolerance = 1e-6;  // hyperbolic lengths that count as equal
+
+// The other side of a triangle at its corner c.
+Side other_side_at(Side side, Corner c) {
+  for (Side s : kSides) {
+    const auto corners = side_corners(s);
+    if (s != side && (corners[0] == c || corners[1] == c)) return s;
+  }
+  return side;
+}
+
+Corner far_corner(Side side, Corner from) {
+  const auto corners = side_corners(side);
+  return corners[0] == from ? corners[1] : corners[0];
+}
+
+// M's tiling in the universal cover, walked triangle by triangle.
+class Cover {
+ public:
+  explicit Cover(const FiniteGroup& group)
+      : group_(group), base_(fundamental_triangle(group.p, group.q)) {
+    const Geometry g = base_.geometry;
+    reflection_ = {base_.t, compose(g, base_.t, base_.s), compose(g, base_.r, base_.t)};
+  }
+
+  Geometry geometry() const { return base_.geometry; }
+  const FundamentalTriangle& base() const { return base_; }
+
+  CoverTriangle across(const CoverTriangle& t, Side side) {
+    ++steps_;
+    return {group_.times(t.element, side_word(side)),
+            compose(geometry(), t.placement, reflection_[index(side)])};
+  }
+  Point corner(const CoverTriangle& t, Corner c) const {
+    return apply(geometry(), t.placement, base_.corners[c]);
+  }
+  // The triangles on one side of a mirror line through a corner: the corner's angle is pi / that.
+  int sectors(Corner c) const { return c == kM ? group_.p : c == kN ? group_.q : 2; }
+  // The reflection in the line through t's side, as an isometry of the cover.
+  Isometry mirror(const CoverTriangle& t, Side side) const {
+    const Geometry g = geometry();
+    return compose(g, compose(g, t.placement, reflection_[index(side)]), inverse(g, t.placement));
+  }
+  std::size_t steps() const { return steps_; }
+
+ private:
+  const FiniteGroup& group_;
+  FundamentalTriangle base_;
+  std::array<Isometry, 3> reflection_;
+  std::size_t steps_ = 0;
+};
+
+// A ray along a mirror line from a tiling vertex: `side` of `triangle` lies on it, starting at
+// corner `from`; the triangle is on the ray's inner side (where hQ is).
+struct Ray {
+  CoverTriangle triangle;
+  Side side = Side::MN;
+  Corner from = kN;
+  Corner to() const { return far_corner(side, from); }
+};
+
+// Turns about corner c of t (whose `side` is on a line through c) by `sectors` triangles, away
+// from that line: the ray from c along the line at angle sectors * pi / cover.sectors(c).
+Ray turn(Cover& cover, CoverTriangle t, Side side, Corner c, int sectors) {
+  Side free = other_side_at(side, c);
+  for (int k = 1; k < sectors; ++k) {
+    t = cover.across(t, free);
+    free = other_side_at(free, c);
+  }
+  return {t, free, c};
+}
+
+// The ray that goes on through the far vertex of `ray`'s side, on the same side of the line.
+Ray continued(Cover& cover, const Ray& ray) {
+  const Corner c = ray.to();
+  return turn(cover, ray.triangle, ray.side, c, cover.sectors(c));
+}
+
+// The ray perpendicular to `ray`'s line at its far vertex, into its inner side (towards where the
+// ray came from); the vertex must have an even number of sectors.
+Ray perpendicular(Cover& cover, const Ray& ray) {
+  const Corner c = ray.to();
+  return turn(cover, ray.triangle, ray.side, c, cover.sectors(c) / 2);
+}
+
+bool same_point(Geometry g, const Point& z, const Point& w) {
+  return distance(g, z, w) < kLengthTolerance;
+}
+
+// The leg-to-base relation of a Saccheri quadrilateral with summit angles alpha (see pairing.h);
+// 0 where the leg is too short for one.
+double saccheri_base(double leg, double alpha) {
+  const double c = std::cos(alpha);
+  const double d = std::sinh(leg) * std::sinh(leg) - c * c * std::cosh(leg) * std::cosh(leg);
+  return d > 0 ? 2 * std::asinh(c / std::sqrt(d)) : 0.0;
+}
+
+// The longest leg whose base is at least `base`.
+double longest_leg(double base, double alpha) {
+  const double c = std::cos(alpha), s = std::sin(alpha);
+  const double h = std::sinh(base / 2);
+  return std::asinh(std::sqrt((c * c / (h * h) + c * c) / (s * s)));
+}
+
+// A quadrilateral that closed in the cover, before the group checks.
+struct Candidate {
+  Corner apex;
+  std::array<Point, 4> corners;
+  std::array<CoverTriangle, 4> on_line;  // a triangle with a side on L1..L4
+  std::array<Side, 4> line_side;
+  double leg = 0, base = 0;
+};
+
+class PairingFinder {
+ public:
+  PairingFinder(const FiniteGroup& source, const ElementWords& words, const Presentation& target,
+                std::size_t target_order, const PairingLimits& limits)
+      : source_(source),
+        words_(words),
+        target_(target),
+        target_order_(target_order),
+        limits_(limits),
+        cover_(source),
+        alpha_(std::numbers::pi / target.q) {
+    const auto& d = cover_.base().corners;
+    const Geometry g = cover_.geometry();
+    shortest_side_ =
+        std::min({distance(g, d[kM], d[kN]), distance(g, d[kN], d[kO]), distance(g, d[kM], d[kO])});
+    k_ = source.order() / target_order;
+  }
+
+  PairingSearch run() {
+    for (Corner apex : {kN, kM}) {
+      if (cover_.sectors(apex) % target_.q != 0) continue;
+      for (Side l4 : kSides) {
+        const auto corners = side_corners(l4);
+        if (corners[0] != apex && corners[1] != apex) continue;
+        walk_legs(apex, l4);
+      }
+    }
+    std::stable_sort(
+        result_.pairings.begin(), result_.pairings.end(),
+        [](const Pairing& x, const Pairing& y) { return x.distortion() < y.distortion(); });
+    result_.steps = cover_.steps();
+    return std::move(result_);
+  }
+
+ private:
+  bool out_of_steps() {
+    if (cover_.steps() <= limits_.max_steps) return false;
+    result_.stopped = true;
+    return true;
+  }
+
+  // P1 = D0's corner `apex`, L4 through D0's side l4; candidates P2 along L1.
+  void walk_legs(Corner apex, Side l4) {
+    const CoverTriangle d0;
+    const Point p1 = cover_.corner(d0, apex);
+    const Geometry g = cover_.geometry();
+    const double max_leg = longest_leg(shortest_side_, alpha_) + kLengthTolerance;
+    Ray along = turn(cover_, d0, l4, apex, cover_.sectors(apex) / target_.q);
+    const Ray first = along;
+    for (;; along = continued(cover_, along)) {
+      if (out_of_steps()) return;
+      const Point p2 = cover_.corner(along.triangle, along.to());
+      const double leg = distance(g, p1, p2);
+      if (leg > max_leg) return;
+      if (cover_.sectors(along.to()) % 2 != 0) continue;
+      const double base = saccheri_base(leg, alpha_);
+      if (base <= 0) continue;
+      Candidate c;
+      c.apex = apex;
+      c.corners[0] = p1;
+      c.corners[1] = p2;
+      c.on_line[0] = first.triangle;
+      c.line_side[0] = first.side;
+      c.on_line[3] = d0;
+      c.line_side[3] = l4;
+      c.leg = leg;
+      c.base = base;
+      walk_base(perpendicular(cover_, along), c);
+    }
+  }
+
+  // Candidates P3 along L2 at the Saccheri base's distance from P2.
+  void walk_base(Ray along, Candidate c) {
+    const Geometry g = cover_.geometry();
+    c.on_line[1] = along.triangle;
+    c.line_side[1] = along.side;
+    for (;; along = continued(cover_, along)) {
+      if (out_of_steps()) return;
+      const Point p3 = cover_.corner(along.triangle, along.to());
+      const double d = distance(g, c.corners[1], p3);
+      if (d > c.base + kLengthTolerance) return;
+      if (d < c.base - kLengthTolerance || cover_.sectors(along.to()) % 2 != 0) continue;
+      c.corners[2] = p3;
+      close_quadrilateral(perpendicular(cover_, along), c);
+      return;
+    }
+  }
+
+  // P4 along L3 at the leg's distance from P3; L4 must pass through it at angle pi/q_T.
+  void close_quadrilateral(Ray along, Candidate c) {
+    const Geometry g = cover_.geometry();
+    c.on_line[2] = along.triangle;
+    c.line_side[2] = along.side;
+    for (;; along = continued(cover_, along)) {
+      if (out_of_steps()) return;
+      const Corner corner = along.to();
+      const Point p4 = cover_.corner(along.triangle, corner);
+      const double d = distance(g, c.corners[2], p4);
+      if (d > c.leg + kLengthTolerance) return;
+      if (d < c.leg - kLengthTolerance) continue;
+      if (cover_.sectors(corner) % target_.q != 0) return;
+      const Ray l4 =
+          turn(cover_, along.triangle, along.side, corner, cover_.sectors(corner) / target_.q);
+      const Isometry l4_mirror = cover_.mirror(l4.triangle, l4.side);
+      if (!same_point(g, apply(g, l4_mirror, c.corners[0]), c.corners[0])) return;
+      c.corners[3] = p4;
+      ++result_.candidates;
+      check_in_group(c, l4);
+      return;
+    }
+  }
+
+  Element reflection(const CoverTriangle& t, Side side) const {
+    return words_.conjugate(t.element, source_.times(0, side_word(side)));
+  }
+
+  void check_in_group(const Candidate& c, const Ray& l4_at_p4) {
+    const Element a = reflection(c.on_line[0], c.line_side[0]);
+    const Element b = reflection(c.on_line[1], c.line_side[1]);
+    const Element a3 = reflection(c.on_line[2], c.line_side[2]);
+    const Element cc = reflection(c.on_line[3], c.line_side[3]);
+    if (a != a3) return;
+    // The same line from both ends must be the same element: a check of the walks.
+    if (reflection(l4_at_p4.triangle, l4_at_p4.side) != cc) return;
+    for (const Pairing& found : result_.pairings) {
+      if (std::tie(found.a, found.b, found.c) == std::tie(a, b, cc)) return;
+    }
+    if (!relators_hold(a, b, cc) || generated_order(a, b, cc) != target_order_) return;
+    Pairing pairing;
+    pairing.target = target_.name;
+    pairing.a = a;
+    pairing.b = b;
+    pairing.c = cc;
+    pairing.corners = c.corners;
+    pairing.apex = c.apex;
+    pairing.leg = c.leg;
+    pairing.base = c.base;
+    if (!collect_flags(c, pairing)) return;
+    result_.pairings.push_back(std::move(pairing));
+  }
+
+  // T's relators with R = b c, S = c a, T = c (all three are involutions).
+  bool relators_hold(Element a, Element b, Element c) const {
+    const Word wa = words_.word(a), wb = words_.word(b), wc = words_.word(c);
+    auto cat = [](const Word& x, const Word& y) {
+      Word w = x;
+      w.insert(w.end(), y.begin(), y.end());
+      return w;
+    };
+    const std::array<Word, kLetterCount> image = {cat(wb, wc), cat(wc, wb), cat(wc, wa),
+                                                  cat(wa, wc), wc};
+    for (const Word& relator : defining_relators(target_)) {
+      Element e = 0;
+      for (Letter x : relator) e = source_.times(e, image[static_cast<std::size_t>(x)]);
+      if (e != 0) return false;
+    }
+    return true;
+  }
+
+  // |<a, b, c>|, or more than target_order_ as soon as it exceeds it.
+  std::size_t generated_order(Element a, Element b, Element c) const {
+    const std::array<Word, 3> gens = {words_.word(a), words_.word(b), words_.word(c)};
+    std::vector<bool> seen(source_.order(), false);
+    std::vector<Element> elements = {0};
+    seen[0] = true;
+    for (std::size_t k = 0; k < elements.size(); ++k) {
+      for (const Word& w : gens) {
+        const Element h = source_.times(elements[k], w);
+        if (seen[static_cast<std::size_t>(h)]) continue;
+        seen[static_cast<std::size_t>(h)] = true;
+        elements.push_back(h);
+        if (elements.size() > target_order_) return elements.size();
+      }
+    }
+    return elements.size();
+  }
+
+  // The flag triangles inside hQ, by a flood fill from D0 over sides not on L1..L4; they must
+  // number k, all distinct.
+  bool collect_flags(const Candidate& c, Pairing& pairing) {
+    const Geometry g = cover_.geometry();
+    std::array<Isometry, 4> mirrors;
+    for (std::size_t i = 0; i < 4; ++i) mirrors[i] = cover_.mirror(c.on_line[i], c.line_side[i]);
+    auto on_boundary = [&](const CoverTriangle& t, Side side) {
+      const auto [u, v] = side_corners(side);
+      const Point pu = cover_.corner(t, u), pv = cover_.corner(t, v);
+      for (const Isometry& m : mirrors) {
+        if (same_point(g, apply(g, m, pu), pu) && same_point(g, apply(g, m, pv), pv)) return true;
+      }
+      return false;
+    };
+    std::set<Element> seen = {0};
+    pairing.flags = {CoverTriangle{}};
+    for (std::size_t i = 0; i < pairing.flags.size(); ++i) {
+      for (Side side : kSides) {
+        const CoverTriangle t = pairing.flags[i];
+        if (on_boundary(t, side)) continue;
+        const CoverTriangle next = cover_.across(t, side);
+        if (seen.count(next.element) > 0) {
+          // A triangle met again must be the same triangle of the cover, not another lift.
+          const Point centre = cover_.corner(next, kO);
+          bool placed = false;
+          for (const CoverTriangle& f : pairing.flags) {
+            if (f.element == next.element && same_point(g, cover_.corner(f, kO), centre))
+              placed = true;
+          }
+          if (!placed) return false;
+          continue;
+        }
+        seen.insert(next.element);
+        pairing.flags.push_back(next);
+        if (pairing.flags.size() > k_) return false;
+      }
+    }
+    return pairing.flags.size() == k_;
+  }
+
+  const FiniteGroup& source_;
+  const ElementWords& words_;
+  const Presentation& target_;
+  std::size_t target_order_;
+  PairingLimits limits_;
+  Cover cover_;
+  double alpha_;
+  double shortest_side_ = 0;
+  std::size_t k_ = 0;
+  PairingSearch result_;
+};
+
+}  // namespace
+
+double Pairing::distortion() const {
+  // Legs `leg`, base `base`; the summit follows from the other three (it is longer than the base).
+  const double lo = std::min(leg, base), hi = std::max(leg, base);
+  return lo > 0 ? hi / lo : 0.0;
+}
+
+PairingSearch find_pairings(const FiniteGroup& source, const ElementWords& words,
+                            const Presentation& target, std::size_t target_order,
+                            const PairingLimits& limits) {
+  if (geometry_of_type(source.p, source.q) != Geometry::Hyperbolic)
+    throw InputError(
+        "a map is drawn on another map's surface only when it is hyperbolic (genus "
+        "2 or more); {" +
+        std::to_string(source.p) + "," + std::to_string(source.q) + "} is not");
+  if (target.q < 3 || target_order == 0 || source.order() % target_order != 0) return {};
+  return PairingFinder(source, words, target, target_order, limits).run();
+}
+
+std::vector<Element> pairing_images(const FiniteGroup& target, const ElementWords& source_words,
+                                    const Pairing& pairing) {
+  const FiniteGroup& source = source_words.group();
+  const Word wa = source_words.word(pairing.a), wb = source_words.word(pairing.b),
+             wc = source_words.word(pairing.c);
+  auto cat = [](const Word& x, const Word& y) {
+    Word w = x;
+    w.insert(w.end(), y.begin(), y.end());
+    return w;
+  };
+  const std::array<Word, kLetterCount> image = {cat(wb, wc), cat(wc, wb), cat(wc, wa), cat(wa, wc),
+                                                wc};
+  std::vector<Element> phi(target.order(), -1);
+  phi[0] = 0;
+  std::vector<Element> queue = {0};
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const Element g = queue[k];
+    for (int x = 0; x < kLetterCount; ++x) {
+      const Element h = target.times(g, static_cast<Letter>(x));
+      if (phi[static_cast<std::size_t>(h)] >= 0) continue;
+      phi[static_cast<std::size_t>(h)] =
+          source.times(phi[static_cast<std::size_t>(g)], image[static_cast<std::size_t>(x)]);
+      queue.push_back(h);
+    }
+  }
+  return phi;
+}
+
+}  // namespace tessera::regmap
