@@ -20,7 +20,7 @@ constexpr Command kCommands[] = {
     {"info", tessera::cli::info_command, "print the figures of a mesh (V, E, F, genus, ...)"},
     {"convert", tessera::cli::convert_command,
      "convert a mesh between OBJ, OFF, PLY, STL, glTF/GLB"},
-    {"regmap", tessera::cli::regmap_command, "regular maps: catalog, info, tiling, surface"},
+    {"regmap", tessera::cli::regmap_command, "regular maps: catalog, info, tiling, surface, map"},
     {"field", tessera::cli::field_command, "a cross field: singularities, Poincare-Hopf check"},
     {"param", tessera::cli::param_command, "seamless Poisson parameterization (uv per corner)"},
     {"solve", tessera::cli::solve_command, "program P1: the conflict-free min-weight matching"},

@@ -15,8 +15,11 @@
 #include "regmap/conder_format.h"
 #include "regmap/finite_group.h"
 #include "regmap/map_json.h"
+#include "regmap/mapped_map.h"
+#include "regmap/pairing.h"
 #include "regmap/regular_surface.h"
 #include "regmap/surface_export.h"
+#include "regmap/target_maps.h"
 #include "regmap/tiling_svg.h"
 #include "regmap/triangle_tiling.h"
 #include "stderr_progress.h"
@@ -41,6 +44,7 @@ constexpr const char* kRegmapHelp =
     "  catalog         list the shipped maps, filtered by genus or type\n"
     "  tiling <map>    draw the map's fundamental polygon Tri(G) with its boundary pairs as SVG\n"
     "  surface <map>   build the map's regular surface: its edge graph tubified (GLB, PLY, OBJ)\n"
+    "  map <map>       draw the map on the regular surface of a target map of its genus\n"
     "\n"
     "<map> is a catalog name (R3.1, or R3.1' for the dual) or a file holding one entry in "
     "Conder's\n"
@@ -110,6 +114,33 @@ constexpr const char* kSurfaceHelp =
     "  --max-faces N    largest mesh built (default 8000000)\n"
     "  --max-triangles N, --max-cosets N, --max-seconds S, --max-file-bytes N\n"
     "                   as for 'tessera regmap tiling'\n";
+
+constexpr const char* kMapHelp =
+    "usage: tessera regmap map <map> [--on <target>] [-o map.glb|.ply|.obj] [--json] [options]\n"
+    "\n"
+    "Draws the map (the source, genus g) on the regular surface of a target map of surface genus\n"
+    "g (thesis Sec. 9.5-9.6): Platonic maps (Tetrahedron, Cube, Octahedron, Dodecahedron,\n"
+    "Icosahedron), hosohedra {2,n}, torus maps {4,4}_(b,0), {4,4}_(b,b), {3,6}_(b,0), "
+    "{3,6}_(b,b),\n"
+    "{6,3}_(b,0), {6,3}_(b,b), and the catalog's maps and duals. A pairing maps the target's\n"
+    "reflections a, b, c to reflections of the source realizing the quarter tube as a geodesic\n"
+    "quadrilateral of the source's tiling; the source's faces, edges and vertices are carried "
+    "into\n"
+    "every quarter tube. Checks on the mesh: V, E, F found, every face a disk, the quarter tubes\n"
+    "cover the source's flags once, closed, oriented, genus, self-intersections.\n"
+    "Only reflection pairings are searched so far: maps without one (the Hurwitz maps, and the\n"
+    "thesis's showcase pairs, which need rotation pairings) get an error naming what was tried.\n"
+    "  --on T           the target (default: every target of the map's genus, in the order above,\n"
+    "                   the first with a pairing)\n"
+    "  -o FILE          .glb (faces coloured, per-face _FACE and _TILE, edges as lines, the\n"
+    "                   pairing in extras), .ply (integer face properties 'face', 'tile'), .obj\n"
+    "  --json           print {source, target, genus, V, E, F, faces_are_disks, covers_once,\n"
+    "                   closed, oriented, self_intersections, symmetries_verified, seconds, ...}\n"
+    "  --subdivisions N template subdivisions per flag triangle side (default: from the grid)\n"
+    "  --max-steps N    work limit of the pairing search per target, triangles walked\n"
+    "                   (default 2000000)\n"
+    "  --no-self-intersections   skip the self-intersection count\n"
+    "  --max-cosets N, --max-seconds S, --max-file-bytes N   as for 'tessera regmap info'\n";
 
 bool wants_help(const Args& args) {
   for (const std::string& a : args) {
@@ -376,6 +407,161 @@ int surface(const Args& args) {
   return 0;
 }
 
+struct TargetPairing {
+  regmap::TargetMap target;
+  regmap::Pairing pairing;
+};
+
+// The first target (the named one, or every target of the genus) with a pairing; InputError
+// naming the targets tried otherwise.
+TargetPairing pick_target(const regmap::FiniteGroup& source, const regmap::ElementWords& words,
+                          int genus, const std::string& on, const regmap::PairingLimits& limits,
+                          const std::string& name) {
+  const regmap::Catalog catalog = regmap::read_catalog(catalog_path());
+  std::vector<regmap::TargetMap> targets;
+  if (!on.empty()) {
+    targets.push_back(regmap::find_target(catalog, on));
+    if (targets[0].surface_genus() != genus)
+      throw InputError("the surface of " + on + " has genus " +
+                       std::to_string(targets[0].surface_genus()) + ", " + name + " genus " +
+                       std::to_string(genus) + "; pick a target of genus " + std::to_string(genus) +
+                       " or leave out --on");
+  } else {
+    for (regmap::TargetMap& t : regmap::all_targets(catalog, genus))
+      if (t.surface_genus() == genus) targets.push_back(std::move(t));
+  }
+  std::string tried;
+  bool stopped = false;
+  for (const regmap::TargetMap& t : targets) {
+    const regmap::PairingSearch search =
+        regmap::find_pairings(source, words, t.presentation, 4 * t.edges, limits);
+    if (!search.pairings.empty()) return {t, search.pairings.front()};
+    stopped = stopped || search.stopped;
+    tried += (tried.empty() ? "" : ", ") + t.name;
+  }
+  throw InputError(name + " has no reflection pairing with " +
+                   (tried.empty()
+                        ? std::string("any target (none of genus ") + std::to_string(genus) + ")"
+                        : tried) +
+                   (stopped ? " (the search stopped at --max-steps on some; raise it)" : "") +
+                   "; rotation pairings are not implemented yet");
+}
+
+nlohmann::ordered_json pairing_json(const regmap::Pairing& p) {
+  nlohmann::ordered_json corners = nlohmann::ordered_json::array();
+  for (const regmap::Point& c : p.corners) {
+    const regmap::Complex z = regmap::to_plane(c);
+    corners.push_back({z.real(), z.imag()});
+  }
+  return {{"target", p.target},
+          {"a", p.a},
+          {"b", p.b},
+          {"c", p.c},
+          {"apex", p.apex == regmap::kN ? "vertex" : "face"},
+          {"leg", p.leg},
+          {"base", p.base},
+          {"flags", p.flags.size()},
+          {"corners", corners}};
+}
+
+int map_on_target(const Args& args) {
+  if (wants_help(args)) {
+    std::fputs(kMapHelp, stdout);
+    return 0;
+  }
+  const ParsedArgs parsed = parse_args(args,
+                                       {"-o", "--on", "--subdivisions", "--max-steps",
+                                        "--max-cosets", "--max-seconds", "--max-file-bytes"},
+                                       {"--json", "--no-self-intersections"}, "regmap map");
+  if (parsed.positional.size() != 1)
+    throw UsageError(
+        "'tessera regmap map' takes one map (a catalog name or a file); run "
+        "'tessera regmap map --help'");
+  const Limits limits = limits_from(parsed);
+  const std::string output = parsed.value("-o");
+  if (!output.empty()) check_mesh_format(output);
+  regmap::PairingLimits pairing_limits;
+  pairing_limits.max_steps = parsed.count("--max-steps", pairing_limits.max_steps);
+  regmap::MappedMapOptions options;
+  options.subdivisions = static_cast<int>(parsed.count("--subdivisions", 0));
+  if (options.subdivisions > 64) throw UsageError("--subdivisions expects 1..64");
+  options.find_self_intersections = !parsed.has("--no-self-intersections");
+
+  const regmap::Presentation presentation = resolve_map(parsed.positional[0], limits);
+  const auto start = std::chrono::steady_clock::now();
+  const regmap::FiniteGroup group = regmap::enumerate_group(presentation, limits);
+  const regmap::MapFigures figures = regmap::map_figures(group);
+  regmap::check_stated_figures(presentation, figures);
+  if (!figures.orientable)
+    throw InputError(presentation.name + " is not orientable: it has no regular surface to lie on");
+  const regmap::ElementWords words(group);
+  const TargetPairing chosen = pick_target(group, words, figures.genus, parsed.value("--on"),
+                                           pairing_limits, presentation.name);
+  const regmap::FiniteGroup target_group =
+      regmap::enumerate_group(chosen.target.presentation, limits);
+  regmap::SurfaceOptions surface_options;
+  surface_options.find_self_intersections = false;
+  const regmap::RegularSurface surface = regmap::build_regular_surface(
+      chosen.target.presentation, target_group, surface_options, limits, stderr_progress());
+  const regmap::MappedMap drawn =
+      regmap::map_onto_surface(group, words, chosen.pairing, surface, options, stderr_progress());
+  const double seconds = seconds_since(start);
+  const regmap::MappedMapStats& s = drawn.stats;
+  nlohmann::ordered_json out = {
+      {"source", presentation.name},
+      {"target", chosen.target.name},
+      {"target_kind", regmap::to_string(chosen.target.kind)},
+      {"genus", s.genus},
+      {"V", s.vertices},
+      {"E", s.edges},
+      {"F", s.faces},
+      {"expected", {{"V", figures.vertices}, {"E", figures.edges}, {"F", figures.faces}}},
+      {"faces_are_disks", s.faces_are_disks},
+      {"covers_once", s.covers_once},
+      {"closed", s.closed},
+      {"oriented", s.oriented},
+      {"self_intersections", s.self_intersections_searched
+                                 ? nlohmann::ordered_json(s.self_intersections)
+                                 : nlohmann::ordered_json(nullptr)},
+      {"symmetries_verified", surface.stats.symmetries_verified},
+      {"surface_base", surface.stats.base},
+      {"subdivisions", s.subdivisions},
+      {"mesh_vertices", s.mesh_vertices},
+      {"mesh_faces", s.mesh_faces},
+      {"pairing", pairing_json(chosen.pairing)},
+      {"seconds", seconds}};
+  if (!output.empty()) {
+    Scene scene;
+    scene.mesh = drawn.mesh;
+    for (std::int32_t face : drawn.mesh.face_attributes.at(regmap::kFaceAttribute))
+      scene.face_colors.push_back(regmap::quarter_tube_color(face));
+    LineSet edges;
+    edges.name = "edges";
+    for (const auto& [a, b] : drawn.edge_segments)
+      edges.polylines.push_back({drawn.mesh.positions[a], drawn.mesh.positions[b]});
+    scene.line_sets.push_back(std::move(edges));
+    scene.extras = {{"map", presentation.name}, {"mapped", out}};
+    write_file_bytes(output, encode_scene(scene, output));
+  }
+  if (parsed.has("--json")) {
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
+  }
+  std::printf(
+      "%s drawn on the surface of %s (%s)\n"
+      "  V %zu, E %zu, F %zu found (the map has %zu, %zu, %zu); faces are disks: %s\n"
+      "  closed %s, oriented %s, genus %ld, quarter tubes cover the flags once: %s\n",
+      presentation.name.c_str(), chosen.target.name.c_str(), surface.stats.base.c_str(), s.vertices,
+      s.edges, s.faces, figures.vertices, figures.edges, figures.faces,
+      s.faces_are_disks ? "yes" : "no", s.closed ? "yes" : "no", s.oriented ? "yes" : "no", s.genus,
+      s.covers_once ? "yes" : "no");
+  if (s.self_intersections_searched)
+    std::printf("  %zu self-intersecting triangle pairs\n", s.self_intersections);
+  std::printf("  %.3f s\n", seconds);
+  if (!output.empty()) std::printf("  wrote %s\n", output.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int regmap_command(const Args& args) {
@@ -393,6 +579,7 @@ int regmap_command(const Args& args) {
   if (sub == "catalog") return catalog(rest);
   if (sub == "tiling") return tiling(rest);
   if (sub == "surface") return surface(rest);
+  if (sub == "map") return map_on_target(rest);
   throw UsageError("unknown subcommand 'regmap " + sub + "'; run 'tessera regmap --help'");
 }
 

@@ -62,4 +62,18 @@ EdgeTable build_edge_table(const Mesh& mesh) {
   return table;
 }
 
+Closure closure(const Mesh& mesh) {
+  const EdgeTable table = build_edge_table(mesh);
+  Closure result;
+  for (Index e = 0; e < table.edge_count(); ++e) {
+    const auto corners = table.corners(e);
+    if (corners.size() != 2) {
+      result.closed = false;
+      continue;
+    }
+    if (mesh.face_vertices[corners[0]] == mesh.face_vertices[corners[1]]) result.oriented = false;
+  }
+  return result;
+}
+
 }  // namespace tessera

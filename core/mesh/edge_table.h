@@ -31,4 +31,11 @@ EdgeTable build_edge_table(const Mesh& mesh);
 // The face of every corner.
 std::vector<Index> corner_faces(const Mesh& mesh);
 
+// Closed: every edge has two faces; oriented: they run along it in opposite directions.
+struct Closure {
+  bool closed = true;
+  bool oriented = true;
+};
+Closure closure(const Mesh& mesh);
+
 }  // namespace tessera

@@ -272,17 +272,9 @@ bool faces_are_disks(const Mesh& mesh, std::size_t labels) {
 }
 
 void check_closed_and_oriented(const Mesh& mesh, MappedMapStats& stats) {
-  const EdgeTable table = build_edge_table(mesh);
-  stats.closed = true;
-  stats.oriented = true;
-  for (Index e = 0; e < table.edge_count(); ++e) {
-    const auto corners = table.corners(e);
-    if (corners.size() != 2) {
-      stats.closed = false;
-      continue;
-    }
-    if (mesh.face_vertices[corners[0]] == mesh.face_vertices[corners[1]]) stats.oriented = false;
-  }
+  const Closure c = closure(mesh);
+  stats.closed = c.closed;
+  stats.oriented = c.oriented;
 }
 
 }  // namespace

@@ -78,19 +78,10 @@ void try_spine(const LineGraph& line, const JunctionOrder& order, const TubeShap
   self_intersections = crossings;
 }
 
-// Closed: every edge has two faces; oriented: they run along it in opposite directions.
 void check_closed_and_oriented(const Mesh& mesh, SurfaceStats& stats) {
-  const EdgeTable table = build_edge_table(mesh);
-  stats.closed = true;
-  stats.oriented = true;
-  for (Index e = 0; e < table.edge_count(); ++e) {
-    const auto corners = table.corners(e);
-    if (corners.size() != 2) {
-      stats.closed = false;
-      continue;
-    }
-    if (mesh.face_vertices[corners[0]] == mesh.face_vertices[corners[1]]) stats.oriented = false;
-  }
+  const Closure c = closure(mesh);
+  stats.closed = c.closed;
+  stats.oriented = c.oriented;
 }
 
 // The topology and the group of the surface, from its mesh.

@@ -1,0 +1,72 @@
+// `tessera regmap map`: the JSON keys of the issue, the PLY's integer face properties "face" and
+// "tile" (F distinct faces), the GLB's edges and extras, and exit code 2 with a message naming
+// what was tried when there is no pairing or the target does not fit.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "cli_run.h"
+#include "mesh/readers.h"
+#include "mesh_test_util.h"
+
+namespace tessera {
+namespace {
+
+using test::run_cli;
+
+TEST(RegmapMapCli, JsonAndPlyOfR34OnItsTorusMap) {
+  const std::string ply = test::temp_path("r34_mapped.ply");
+  const auto r = run_cli("regmap map R3.4 --on '{4,4}_(1,1)' -o '" + ply + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["source"], "R3.4");
+  EXPECT_EQ(j["target"], "{4,4}_(1,1)");
+  EXPECT_EQ(j["genus"], 3);
+  EXPECT_EQ(j["V"], 8);
+  EXPECT_EQ(j["E"], 24);
+  EXPECT_EQ(j["F"], 12);
+  EXPECT_EQ(j["faces_are_disks"], true);
+  EXPECT_EQ(j["closed"], true);
+  EXPECT_TRUE(j["self_intersections"].is_number_unsigned());
+  EXPECT_TRUE(j.contains("symmetries_verified"));
+  EXPECT_GE(j["seconds"].get<double>(), 0.0);
+  const Mesh mesh = read_mesh_file(ply, Limits());
+  ASSERT_EQ(mesh.face_attributes.count("face"), 1u);
+  ASSERT_EQ(mesh.face_attributes.count("tile"), 1u);
+  const auto& face = mesh.face_attributes.at("face");
+  EXPECT_EQ(std::set<int>(face.begin(), face.end()).size(), 12u);
+  const auto& tile = mesh.face_attributes.at("tile");
+  EXPECT_EQ(std::set<int>(tile.begin(), tile.end()).size(), 16u);  // 4E of {4,4}_(1,1)
+}
+
+TEST(RegmapMapCli, PicksATargetOfTheGenusByItself) {
+  const auto r = run_cli("regmap map R2.2 --json --no-self-intersections");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["genus"], 2);
+  EXPECT_EQ(j["F"], j["expected"]["F"]);
+  EXPECT_TRUE(j["self_intersections"].is_null());
+}
+
+TEST(RegmapMapCli, NoPairingOrAWrongTargetExitsWithTwo) {
+  const auto none = run_cli("regmap map R3.1", true);
+  EXPECT_EQ(none.exit_code, 2) << none.out;
+  EXPECT_NE(none.out.find("no reflection pairing with"), std::string::npos) << none.out;
+  EXPECT_NE(none.out.find("Tetrahedron"), std::string::npos) << none.out;
+  for (const char* args : {"regmap map", "regmap map R3.4 --on Cube", "regmap map R3.4 --on Nope",
+                           "regmap map R3.4 -o out.xyz", "regmap map R3.4 --subdivisions 500"}) {
+    const auto r = run_cli(args, true);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out;
+  }
+}
+
+TEST(RegmapMapCli, Help) {
+  const auto r = run_cli("regmap map --help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("--on"), std::string::npos);
+  EXPECT_NE(run_cli("regmap --help").out.find("map <map>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tessera
