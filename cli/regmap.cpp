@@ -17,6 +17,7 @@
 #include "regmap/map_json.h"
 #include "regmap/mapped_map.h"
 #include "regmap/pairing.h"
+#include "regmap/realization.h"
 #include "regmap/regular_surface.h"
 #include "regmap/surface_export.h"
 #include "regmap/target_maps.h"
@@ -123,20 +124,20 @@ constexpr const char* kMapHelp =
     "Icosahedron), hosohedra {2,n}, torus maps {4,4}_(b,0), {4,4}_(b,b), {3,6}_(b,0), "
     "{3,6}_(b,b),\n"
     "{6,3}_(b,0), {6,3}_(b,b), and the catalog's maps and duals. A pairing maps the target's\n"
-    "reflections a, b, c to reflections of the source realizing the quarter tube as a geodesic\n"
-    "quadrilateral of the source's tiling; the source's faces, edges and vertices are carried "
-    "into\n"
-    "every quarter tube. Checks on the mesh: V, E, F found, every face a disk, the quarter tubes\n"
-    "cover the source's flags once, closed, oriented, genus, self-intersections.\n"
-    "Only reflection pairings are searched so far: maps without one (the Hurwitz maps, and the\n"
-    "thesis's showcase pairs, which need rotation pairings) get an error naming what was tried.\n"
-    "  --on T           the target (default: every target of the map's genus, in the order above,\n"
-    "                   the first with a pairing)\n"
+    "symmetries to the source's: its reflections a, b, c to reflections whose mirrors bound the\n"
+    "quarter tube as a geodesic quadrilateral of the source's tiling, or, where no reflections\n"
+    "pair (the Klein quartic), its rotations S and R S to rotations of the source whose centres\n"
+    "bound two quarter tubes. The source's faces, edges and vertices are carried into every\n"
+    "quarter tube. Checks on the mesh: V, E, F found, every face a disk, the quarter tubes cover\n"
+    "the source's flags once, closed, oriented, genus, self-intersections.\n"
+    "  --on T           the target (default: every target of the map's genus, the best ranked:\n"
+    "                   no hosohedron, reflections before rotations, least distorted)\n"
     "  -o FILE          .glb (faces coloured, per-face _FACE and _TILE, edges as lines, the\n"
     "                   pairing in extras), .ply (integer face properties 'face', 'tile'), .obj\n"
     "  --json           print {source, target, genus, V, E, F, faces_are_disks, covers_once,\n"
     "                   closed, oriented, self_intersections, symmetries_verified, seconds, ...}\n"
-    "  --subdivisions N template subdivisions per flag triangle side (default: from the grid)\n"
+    "  --subdivisions N subdivisions of the template's pieces before it is refined to the\n"
+    "                   quarter tube's grid (default 2)\n"
     "  --max-steps N    work limit of the pairing search per target, triangles walked\n"
     "                   (default 2000000)\n"
     "  --no-self-intersections   skip the self-intersection count\n"
@@ -407,16 +408,12 @@ int surface(const Args& args) {
   return 0;
 }
 
-struct TargetPairing {
-  regmap::TargetMap target;
-  regmap::Pairing pairing;
-};
-
-// The first target (the named one, or every target of the genus) with a pairing; InputError
-// naming the targets tried otherwise.
-TargetPairing pick_target(const regmap::FiniteGroup& source, const regmap::ElementWords& words,
-                          int genus, const std::string& on, const regmap::PairingLimits& limits,
-                          const std::string& name) {
+// The best realization on the named target, or on every target of the genus; InputError naming
+// the targets tried otherwise.
+regmap::Realization pick_target(const regmap::FiniteGroup& source,
+                                const regmap::ElementWords& words, int genus, const std::string& on,
+                                const regmap::PairingLimits& pairing_limits, const Limits& limits,
+                                const std::string& name) {
   const regmap::Catalog catalog = regmap::read_catalog(catalog_path());
   std::vector<regmap::TargetMap> targets;
   if (!on.empty()) {
@@ -427,41 +424,42 @@ TargetPairing pick_target(const regmap::FiniteGroup& source, const regmap::Eleme
                        std::to_string(genus) + "; pick a target of genus " + std::to_string(genus) +
                        " or leave out --on");
   } else {
-    for (regmap::TargetMap& t : regmap::all_targets(catalog, genus))
-      if (t.surface_genus() == genus) targets.push_back(std::move(t));
+    targets = regmap::all_targets(catalog, genus);
   }
+  const regmap::RealizationSearch search =
+      regmap::find_realizations(source, words, genus, targets, pairing_limits, limits);
+  if (!search.found.empty()) return search.found.front();
   std::string tried;
-  bool stopped = false;
-  for (const regmap::TargetMap& t : targets) {
-    const regmap::PairingSearch search =
-        regmap::find_pairings(source, words, t.presentation, 4 * t.edges, limits);
-    if (!search.pairings.empty()) return {t, search.pairings.front()};
-    stopped = stopped || search.stopped;
-    tried += (tried.empty() ? "" : ", ") + t.name;
+  for (const std::string& t : search.tried) tried += (tried.empty() ? "" : ", ") + t;
+  throw InputError(
+      name + " has no pairing, by reflections or by rotations, with " +
+      (tried.empty() ? std::string("any target (none of genus ") + std::to_string(genus) + ")"
+                     : tried) +
+      (search.stopped ? " (the search stopped at --max-steps on some; raise it)" : ""));
+}
+
+nlohmann::ordered_json corners_json(const std::array<regmap::Point, 4>& corners) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const regmap::Point& c : corners) {
+    const regmap::Complex z = regmap::to_plane(c);
+    out.push_back({z.real(), z.imag()});
   }
-  throw InputError(name + " has no reflection pairing with " +
-                   (tried.empty()
-                        ? std::string("any target (none of genus ") + std::to_string(genus) + ")"
-                        : tried) +
-                   (stopped ? " (the search stopped at --max-steps on some; raise it)" : "") +
-                   "; rotation pairings are not implemented yet");
+  return out;
 }
 
 nlohmann::ordered_json pairing_json(const regmap::Pairing& p) {
-  nlohmann::ordered_json corners = nlohmann::ordered_json::array();
-  for (const regmap::Point& c : p.corners) {
-    const regmap::Complex z = regmap::to_plane(c);
-    corners.push_back({z.real(), z.imag()});
+  nlohmann::ordered_json out = {
+      {"target", p.target}, {"kind", regmap::to_string(p.kind)}, {"x", p.x}, {"y", p.y}};
+  if (p.kind == regmap::PairingKind::Reflections) {
+    out["a"] = p.a;
+    out["b"] = p.b;
+    out["c"] = p.c;
   }
-  return {{"target", p.target},
-          {"a", p.a},
-          {"b", p.b},
-          {"c", p.c},
-          {"apex", p.apex == regmap::kN ? "vertex" : "face"},
-          {"leg", p.leg},
-          {"base", p.base},
-          {"flags", p.flags.size()},
-          {"corners", corners}};
+  out["apex"] = p.apex == regmap::kN ? "vertex" : "face";
+  out["distortion"] = p.distortion;
+  out["corners"] = corners_json(p.corners);
+  out["mirrored"] = corners_json(p.mirrored);
+  return out;
 }
 
 int map_on_target(const Args& args) {
@@ -495,8 +493,8 @@ int map_on_target(const Args& args) {
   if (!figures.orientable)
     throw InputError(presentation.name + " is not orientable: it has no regular surface to lie on");
   const regmap::ElementWords words(group);
-  const TargetPairing chosen = pick_target(group, words, figures.genus, parsed.value("--on"),
-                                           pairing_limits, presentation.name);
+  const regmap::Realization chosen = pick_target(group, words, figures.genus, parsed.value("--on"),
+                                                 pairing_limits, limits, presentation.name);
   const regmap::FiniteGroup target_group =
       regmap::enumerate_group(chosen.target.presentation, limits);
   regmap::SurfaceOptions surface_options;

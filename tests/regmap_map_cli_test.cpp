@@ -49,11 +49,27 @@ TEST(RegmapMapCli, PicksATargetOfTheGenusByItself) {
   EXPECT_TRUE(j["self_intersections"].is_null());
 }
 
+// The Klein quartic has no reflection pairing (thesis Sec. 9.6); it is drawn through rotations.
+TEST(RegmapMapCli, DrawsTheKleinQuarticOnTheTetrahedron) {
+  const auto r = run_cli("regmap map R3.1 --json --no-self-intersections");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["target"], "Tetrahedron");
+  EXPECT_EQ(j["pairing"]["kind"], "rotations");
+  EXPECT_EQ(j["V"], 24);
+  EXPECT_EQ(j["E"], 84);
+  EXPECT_EQ(j["F"], 56);
+  EXPECT_EQ(j["genus"], 3);
+  EXPECT_EQ(j["faces_are_disks"], true);
+}
+
 TEST(RegmapMapCli, NoPairingOrAWrongTargetExitsWithTwo) {
-  const auto none = run_cli("regmap map R3.1", true);
+  const auto none = run_cli("regmap map R3.1 --max-steps 1", true);
   EXPECT_EQ(none.exit_code, 2) << none.out;
-  EXPECT_NE(none.out.find("no reflection pairing with"), std::string::npos) << none.out;
+  EXPECT_NE(none.out.find("no pairing, by reflections or by rotations, with"), std::string::npos)
+      << none.out;
   EXPECT_NE(none.out.find("Tetrahedron"), std::string::npos) << none.out;
+  EXPECT_NE(none.out.find("raise it"), std::string::npos) << none.out;
   for (const char* args : {"regmap map", "regmap map R3.4 --on Cube", "regmap map R3.4 --on Nope",
                            "regmap map R3.4 -o out.xyz", "regmap map R3.4 --subdivisions 500"}) {
     const auto r = run_cli(args, true);

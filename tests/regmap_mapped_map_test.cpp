@@ -1,8 +1,9 @@
 // Source maps drawn on target surfaces (thesis Sec. 9.5-9.6): the generated targets have the
-// figures their names promise; every pairing the search returns satisfies the target's relators
-// and generates a group of the target's order; a map drawn through a pairing has, on the built
-// mesh, exactly the source's V, E, F with every face a disk, on a closed oriented surface of the
-// source's genus.
+// figures their names promise; every pairing the search returns extends to an isomorphism of
+// Sym+(T) (reflection pairings of all of Sym(T)); the thesis's showcase pairs and the Klein
+// quartic, which have no reflection pairing, get rotation pairings; a map drawn through a pairing
+// has, on the built mesh, exactly the source's V, E, F with every face a disk, on a closed
+// oriented surface of the source's genus.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -57,6 +58,7 @@ TEST(RegmapTargets, EveryTargetOfAGenusHasThatSurfaceGenus) {
 struct Drawn {
   FiniteGroup source;
   MapFigures figures;
+  FiniteGroup target;
   PairingSearch search;
 };
 
@@ -66,31 +68,59 @@ Drawn search(const std::string& source, const std::string& target) {
   d.figures = map_figures(d.source);
   const ElementWords words(d.source);
   const TargetMap t = find_target(catalog(), target);
-  d.search = find_pairings(d.source, words, t.presentation, 4 * t.edges);
+  d.target = enumerate_group(t.presentation, Limits());
+  d.search = find_pairings(d.source, words, t.presentation, d.target);
   return d;
 }
 
-// The pairing's images satisfy the target's relators under R = b c, S = c a, T = c, and the
-// images of all of Sym(T) are distinct: phi is an isomorphism onto its image.
-void expect_isomorphism(const Drawn& d, const std::string& target) {
-  const ElementWords words(d.source);
-  const TargetMap t = find_target(catalog(), target);
-  const FiniteGroup tg = enumerate_group(t.presentation, Limits());
-  for (const Pairing& p : d.search.pairings) {
-    const std::vector<Element> phi = pairing_images(tg, words, p);
-    EXPECT_EQ(std::set<Element>(phi.begin(), phi.end()).size(), tg.order());
-    // phi(g x) = phi(g) image(x): R -> b c, R^-1 -> c b, S -> c a, S^-1 -> a c, T -> c.
-    const std::array<std::pair<Element, Element>, kLetterCount> image = {
-        {{p.b, p.c}, {p.c, p.b}, {p.c, p.a}, {p.a, p.c}, {p.c, 0}}};
-    for (std::size_t g = 0; g < tg.order(); ++g) {
-      for (int x = 0; x < kLetterCount; ++x) {
-        const Element h = tg.times(static_cast<Element>(g), static_cast<Letter>(x));
-        const auto [first, second] = image[static_cast<std::size_t>(x)];
-        const Element expected = words.multiply(words.multiply(phi[g], first), second);
-        EXPECT_EQ(phi[static_cast<std::size_t>(h)], expected);
+// A map from all of Sym(T) by its letters' images (R -> b c, R^-1 -> c b, S -> c a,
+// S^-1 -> a c, T -> c), built here independently of the library: it is a homomorphism when
+// every table entry agrees, an isomorphism onto its image when its images are distinct.
+void expect_reflection_isomorphism(const ElementWords& words, const FiniteGroup& tg,
+                                   const Pairing& p) {
+  const std::array<std::pair<Element, Element>, kLetterCount> image = {
+      {{p.b, p.c}, {p.c, p.b}, {p.c, p.a}, {p.a, p.c}, {p.c, 0}}};
+  std::vector<Element> phi(tg.order(), -1);
+  phi[0] = 0;
+  std::vector<Element> queue = {0};
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    for (int x = 0; x < kLetterCount; ++x) {
+      const Element g = queue[k];
+      const Element h = tg.times(g, static_cast<Letter>(x));
+      const auto [first, second] = image[static_cast<std::size_t>(x)];
+      const Element e =
+          words.multiply(words.multiply(phi[static_cast<std::size_t>(g)], first), second);
+      if (phi[static_cast<std::size_t>(h)] < 0) {
+        phi[static_cast<std::size_t>(h)] = e;
+        queue.push_back(h);
       }
+      EXPECT_EQ(phi[static_cast<std::size_t>(h)], e);
     }
-    EXPECT_EQ(p.flags.size(), d.source.order() / tg.order());
+  }
+  EXPECT_EQ(std::set<Element>(phi.begin(), phi.end()).size(), tg.order());
+  EXPECT_EQ(p.x, words.multiply(p.c, p.a));
+  EXPECT_EQ(p.y, words.multiply(p.b, p.a));
+}
+
+// Every pairing extends S -> x, R S -> y to an isomorphism of Sym+(T) onto its image, checked
+// here on the whole table of Sym+(T).
+void expect_isomorphism(const Drawn& d) {
+  const ElementWords words(d.source);
+  for (const Pairing& p : d.search.pairings) {
+    const std::vector<Element> phi = rotation_images(d.target, words, p.x, p.y);
+    ASSERT_EQ(phi.size(), d.target.order());
+    const Element r = words.multiply(p.y, words.inverse(p.x));
+    std::set<Element> images;
+    for (std::size_t g = 0; g < d.target.order(); ++g) {
+      if (phi[g] < 0) continue;
+      images.insert(phi[g]);
+      EXPECT_EQ(phi[static_cast<std::size_t>(d.target.times(static_cast<Element>(g), Letter::R))],
+                words.multiply(phi[g], r));
+      EXPECT_EQ(phi[static_cast<std::size_t>(d.target.times(static_cast<Element>(g), Letter::S))],
+                words.multiply(phi[g], p.x));
+    }
+    EXPECT_EQ(images.size(), d.target.order() / 2);
+    if (p.kind == PairingKind::Reflections) expect_reflection_isomorphism(words, d.target, p);
   }
 }
 
@@ -103,8 +133,23 @@ TEST(RegmapPairing, FindsReflectionPairingsThatAreIsomorphisms) {
     SCOPED_TRACE(source + " on " + target);
     const Drawn d = search(source, target);
     ASSERT_FALSE(d.search.pairings.empty());
+    EXPECT_EQ(d.search.pairings[0].kind, PairingKind::Reflections);
     EXPECT_FALSE(d.search.stopped);
-    expect_isomorphism(d, target);
+    expect_isomorphism(d);
+  }
+}
+
+// The thesis's showcase pairs R9.3' on the 2-Cube R2.1', R13.2' on the 2-Octahedron R3.4', R5.8
+// on R2.4, and the Klein quartic R3.1 on the tetrahedron (which the thesis could not draw) have
+// rotation pairings.
+TEST(RegmapPairing, FindsRotationPairingsWhereNoReflectionsPair) {
+  for (const auto& [source, target] : std::vector<std::pair<std::string, std::string>>{
+           {"R9.3'", "R2.1'"}, {"R13.2'", "R3.4'"}, {"R5.8", "R2.4"}, {"R3.1", "Tetrahedron"}}) {
+    SCOPED_TRACE(source + " on " + target);
+    const Drawn d = search(source, target);
+    ASSERT_FALSE(d.search.pairings.empty());
+    EXPECT_EQ(d.search.pairings[0].kind, PairingKind::Rotations);
+    expect_isomorphism(d);
   }
 }
 
@@ -112,8 +157,13 @@ TEST(RegmapPairing, FindsReflectionPairingsThatAreIsomorphisms) {
 // quadrilateral of its tiling (checked independently by enumerating all 16 algebraic triples
 // with c fixed and every mirror line within distance 6); the search must not invent one.
 TEST(RegmapPairing, ReportsNoReflectionPairingWhereNoneExists) {
-  EXPECT_TRUE(search("R9.3'", "R2.1'").search.pairings.empty());
-  EXPECT_TRUE(search("R3.1", "Tetrahedron").search.pairings.empty());
+  for (const auto& [source, target] : std::vector<std::pair<std::string, std::string>>{
+           {"R9.3'", "R2.1'"}, {"R3.1", "Tetrahedron"}}) {
+    const FiniteGroup g = enumerate_group(presentation_of(find_map(catalog(), source)), Limits());
+    const ElementWords words(g);
+    const TargetMap t = find_target(catalog(), target);
+    EXPECT_TRUE(find_reflection_pairings(g, words, t.presentation, 4 * t.edges).pairings.empty());
+  }
 }
 
 TEST(RegmapPairing, AWorkLimitStopsTheSearch) {
@@ -121,9 +171,10 @@ TEST(RegmapPairing, AWorkLimitStopsTheSearch) {
       enumerate_group(presentation_of(find_map(catalog(), "R5.3")), Limits());
   const ElementWords words(source);
   const TargetMap t = find_target(catalog(), "{4,4}_(2,0)");
+  const FiniteGroup tg = enumerate_group(t.presentation, Limits());
   PairingLimits limits;
   limits.max_steps = 3;
-  const PairingSearch s = find_pairings(source, words, t.presentation, 4 * t.edges, limits);
+  const PairingSearch s = find_pairings(source, words, t.presentation, tg, limits);
   EXPECT_TRUE(s.stopped);
   EXPECT_LE(s.steps, 3u + 64u);
 }
@@ -134,8 +185,7 @@ void expect_drawn(const std::string& source, const std::string& target) {
   ASSERT_FALSE(d.search.pairings.empty());
   const ElementWords words(d.source);
   const TargetMap t = find_target(catalog(), target);
-  const FiniteGroup tg = enumerate_group(t.presentation, Limits());
-  const RegularSurface surface = build_regular_surface(t.presentation, tg);
+  const RegularSurface surface = build_regular_surface(t.presentation, d.target);
   MappedMapOptions options;
   options.find_self_intersections = false;
   const MappedMap m = map_onto_surface(d.source, words, d.search.pairings[0], surface, options);
@@ -157,6 +207,12 @@ TEST(RegmapMappedMap, DrawsTheSourceWithItsFiguresOnTheTarget) {
   expect_drawn("R5.3", "{4,4}_(2,0)");
   expect_drawn("R2.2", "{2,3}");
   expect_drawn("R3.6'", "{2,4}");
+}
+
+TEST(RegmapMappedMap, DrawsThroughRotationPairings) {
+  expect_drawn("R3.1", "Tetrahedron");
+  expect_drawn("R9.3'", "R2.1'");
+  expect_drawn("R5.8", "R2.4");
 }
 
 // A pairing found for one target does not glue on another target's surface of another size.

@@ -1,22 +1,24 @@
 // A source map M drawn on the regular surface of a target map T (thesis Sec. 9.5-9.6, Fig. 9.17).
 //
-// A pairing (pairing.h) gives the fundamental quadrilateral hQ in M's universal cover, made of k
-// flag triangles of M, and the images a', b', c' in Sym(M) of the reflections in the quarter
-// tube's sides. The surface's quarter tubes are structured grids (tubification.h), and their
-// adjacency is read off the mesh (surface_group.h). The drawing:
-//   1. the template: hQ's flag triangles, each subdivided n x n in the Klein model (where M's
-//      geodesics are straight), welded into one triangulated disk; every template vertex gets
-//      coordinates (s, t) in the unit square by inverting the bilinear map of hQ's Klein corners
-//      P1 (0,0), P2 (1,0), P3 (1,1), P4 (0,1), so that the sides L4 (junction), L1 (top seam),
-//      L2 (midpoint), L3 (bottom seam) land on s = 0, t = 0, s = 1, t = 1;
-//   2. the group: phi(tile) in Sym(M) for every quarter tube by a walk over the mesh's adjacency,
-//      phi(across the junction) = phi c', phi(across a seam) = phi a', phi(across the midpoint) =
-//      phi b', checked on every adjacency (the pairing glues) and for injectivity;
-//   3. the mesh: the template in every quarter tube g at the grid's point (s columns, t across),
-//      triangles of flag f labelled with M's face of phi(g) f, vertices on a side shared with the
-//      neighbour across it; M's edges are the template's edges along N-O sides.
-// Checks, all from the built mesh: closed, oriented, genus, the images {phi(g) f} cover Sym(M)
-// once, F distinct face labels each a topological disk, V map vertices, E edge midpoints, and
+// A pairing (pairing.h) gives two geodesic quadrilaterals in M's universal cover, Q (quarter tube
+// 0) and c Q (its mirror image across the junction side), and the images x, y in Sym+(M) of the
+// rotations S and R S of Sym+(T). The surface's quarter tubes are structured grids
+// (tubification.h), and their adjacency is read off the mesh (surface_group.h). The drawing:
+//   1. two templates, one per quadrilateral: M's triangles that meet it, clipped to it in the
+//      Klein model (where geodesics are straight), fanned and subdivided, welded into one
+//      triangulated disk; its sides at their arc-length parameters on the unit square's sides
+//      (L1 t = 0 from P1, L2 s = 1 from P2, L3 t = 1 from P4, L4 s = 0 from P1), the rest by
+//      Floater's mean-value map (no folds), then split to the grid's cell size (the grid's nodes
+//      on the sides included) and flipped to Delaunay within M's faces;
+//   2. the group: each quarter tube carries g Q or g c Q, by a walk over the mesh's adjacency
+//      (across the junction the same g, across a seam g x^-1 and back g x, across the midpoint
+//      g y x^-1 and back), checked on every adjacency and for injectivity;
+//   3. the mesh: the template in every quarter tube at the grid's point (s columns, t across),
+//      triangles labelled with M's face of g times their flag, side vertices shared with the
+//      neighbour's (both templates cut a side alike: the pairing's rotations map one onto the
+//      other); M's edges are the template's edges along N-O sides.
+// Checks, all from the built mesh: closed, oriented, genus, the pieces' areas cover every flag
+// of M once, F distinct face labels each an open disk, V map vertices, E edge midpoints, and
 // (optionally) no self-intersections.
 #pragma once
 
@@ -36,7 +38,7 @@ namespace tessera::regmap {
 inline constexpr const char* kFaceAttribute = "face";
 
 struct MappedMapOptions {
-  int subdivisions = 0;  // per flag triangle side; 0 picks it from the quarter tube's grid
+  int subdivisions = 0;  // of the template's pieces before refining to the grid; 0 picks 2
   bool find_self_intersections = true;
 };
 
@@ -45,7 +47,7 @@ struct MappedMapStats {
   std::size_t edges = 0;     // M's edges (their midpoints) found
   std::size_t faces = 0;     // distinct face labels
   bool faces_are_disks = false;
-  bool covers_once = false;  // every flag of M in exactly one quarter tube
+  bool covers_once = false;  // the quarter tubes cover every flag of M once (by area)
   bool closed = false;
   bool oriented = false;
   long genus = 0;

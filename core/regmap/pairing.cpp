@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <optional>
 #include <set>
 #include <tuple>
 
@@ -15,7 +14,27 @@ using enum Letter;
 
 namespace {
 
-constexpr double kLengthTolerance = 1e-6;  // hyperbolic lengths that count as equal
+// Words in M's letters for T's letters R, R^-1, S, S^-1, T under R = b c, S = c a, T = c.
+std::array<Word, kLetterCount> letter_images(const ElementWords& words, Element a, Element b,
+                                             Element c) {
+  const Word wa = words.word(a), wb = words.word(b), wc = words.word(c);
+  auto cat = [](const Word& x, const Word& y) {
+    Word w = x;
+    w.insert(w.end(), y.begin(), y.end());
+    return w;
+  };
+  return {cat(wb, wc), cat(wc, wb), cat(wc, wa), cat(wa, wc), wc};
+}
+
+// Whether the quadrilateral's corners turn counterclockwise (it is convex).
+bool counterclockwise(const std::array<Point, 4>& q) {
+  double area = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Complex u = to_plane(q[i]), v = to_plane(q[(i + 1) % 4]);
+    area += u.real() * v.imag() - u.imag() * v.real();
+  }
+  return area > 0;
+}
 
 // The other side of a triangle at its corner c.
 Side other_side_at(Side side, Corner c) {
@@ -30,42 +49,6 @@ Corner far_corner(Side side, Corner from) {
   const auto corners = side_corners(side);
   return corners[0] == from ? corners[1] : corners[0];
 }
-
-// M's tiling in the universal cover, walked triangle by triangle.
-class Cover {
- public:
-  explicit Cover(const FiniteGroup& group)
-      : group_(group), base_(fundamental_triangle(group.p, group.q)) {
-    const Geometry g = base_.geometry;
-    reflection_ = {base_.t, compose(g, base_.t, base_.s), compose(g, base_.r, base_.t)};
-  }
-
-  Geometry geometry() const { return base_.geometry; }
-  const FundamentalTriangle& base() const { return base_; }
-
-  CoverTriangle across(const CoverTriangle& t, Side side) {
-    ++steps_;
-    return {group_.times(t.element, side_word(side)),
-            compose(geometry(), t.placement, reflection_[index(side)])};
-  }
-  Point corner(const CoverTriangle& t, Corner c) const {
-    return apply(geometry(), t.placement, base_.corners[c]);
-  }
-  // The triangles on one side of a mirror line through a corner: the corner's angle is pi / that.
-  int sectors(Corner c) const { return c == kM ? group_.p : c == kN ? group_.q : 2; }
-  // The reflection in the line through t's side, as an isometry of the cover.
-  Isometry mirror(const CoverTriangle& t, Side side) const {
-    const Geometry g = geometry();
-    return compose(g, compose(g, t.placement, reflection_[index(side)]), inverse(g, t.placement));
-  }
-  std::size_t steps() const { return steps_; }
-
- private:
-  const FiniteGroup& group_;
-  FundamentalTriangle base_;
-  std::array<Isometry, 3> reflection_;
-  std::size_t steps_ = 0;
-};
 
 // A ray along a mirror line from a tiling vertex: `side` of `triangle` lies on it, starting at
 // corner `from`; the triangle is on the ray's inner side (where hQ is).
@@ -100,10 +83,6 @@ Ray perpendicular(Cover& cover, const Ray& ray) {
   return turn(cover, ray.triangle, ray.side, c, cover.sectors(c) / 2);
 }
 
-bool same_point(Geometry g, const Point& z, const Point& w) {
-  return distance(g, z, w) < kLengthTolerance;
-}
-
 // The leg-to-base relation of a Saccheri quadrilateral with summit angles alpha (see pairing.h);
 // 0 where the leg is too short for one.
 double saccheri_base(double leg, double alpha) {
@@ -135,6 +114,7 @@ class PairingFinder {
       : source_(source),
         words_(words),
         target_(target),
+        relators_(defining_relators(target)),
         target_order_(target_order),
         limits_(limits),
         cover_(source),
@@ -157,7 +137,7 @@ class PairingFinder {
     }
     std::stable_sort(
         result_.pairings.begin(), result_.pairings.end(),
-        [](const Pairing& x, const Pairing& y) { return x.distortion() < y.distortion(); });
+        [](const Pairing& x, const Pairing& y) { return x.distortion < y.distortion; });
     result_.steps = cover_.steps();
     return std::move(result_);
   }
@@ -256,30 +236,37 @@ class PairingFinder {
       if (std::tie(found.a, found.b, found.c) == std::tie(a, b, cc)) return;
     }
     if (!relators_hold(a, b, cc) || generated_order(a, b, cc) != target_order_) return;
+    if (!collect_flags(c)) return;
+    const Geometry g = cover_.geometry();
+    const Isometry l4 = cover_.mirror(c.on_line[3], c.line_side[3]);
     Pairing pairing;
     pairing.target = target_.name;
+    pairing.kind = PairingKind::Reflections;
+    pairing.x = words_.multiply(cc, a);
+    pairing.y = words_.multiply(b, a);
     pairing.a = a;
     pairing.b = b;
     pairing.c = cc;
     pairing.corners = c.corners;
+    pairing.mirrored = {c.corners[0], apply(g, l4, c.corners[1]), apply(g, l4, c.corners[2]),
+                        c.corners[3]};
     pairing.apex = c.apex;
-    pairing.leg = c.leg;
-    pairing.base = c.base;
-    if (!collect_flags(c, pairing)) return;
+    pairing.distortion = std::max(c.leg, c.base) / std::min(c.leg, c.base);
+    if (!counterclockwise(pairing.corners)) {
+      // The mirror image across L4: c' hQ, with a' and b' conjugated by c'.
+      std::swap(pairing.corners, pairing.mirrored);
+      pairing.a = words_.conjugate(cc, a);
+      pairing.b = words_.conjugate(cc, b);
+      pairing.x = words_.multiply(cc, pairing.a);
+      pairing.y = words_.multiply(pairing.b, pairing.a);
+    }
     result_.pairings.push_back(std::move(pairing));
   }
 
   // T's relators with R = b c, S = c a, T = c (all three are involutions).
   bool relators_hold(Element a, Element b, Element c) const {
-    const Word wa = words_.word(a), wb = words_.word(b), wc = words_.word(c);
-    auto cat = [](const Word& x, const Word& y) {
-      Word w = x;
-      w.insert(w.end(), y.begin(), y.end());
-      return w;
-    };
-    const std::array<Word, kLetterCount> image = {cat(wb, wc), cat(wc, wb), cat(wc, wa),
-                                                  cat(wa, wc), wc};
-    for (const Word& relator : defining_relators(target_)) {
+    const std::array<Word, kLetterCount> image = letter_images(words_, a, b, c);
+    for (const Word& relator : relators_) {
       Element e = 0;
       for (Letter x : relator) e = source_.times(e, image[static_cast<std::size_t>(x)]);
       if (e != 0) return false;
@@ -307,7 +294,7 @@ class PairingFinder {
 
   // The flag triangles inside hQ, by a flood fill from D0 over sides not on L1..L4; they must
   // number k, all distinct.
-  bool collect_flags(const Candidate& c, Pairing& pairing) {
+  bool collect_flags(const Candidate& c) {
     const Geometry g = cover_.geometry();
     std::array<Isometry, 4> mirrors;
     for (std::size_t i = 0; i < 4; ++i) mirrors[i] = cover_.mirror(c.on_line[i], c.line_side[i]);
@@ -320,17 +307,17 @@ class PairingFinder {
       return false;
     };
     std::set<Element> seen = {0};
-    pairing.flags = {CoverTriangle{}};
-    for (std::size_t i = 0; i < pairing.flags.size(); ++i) {
+    std::vector<CoverTriangle> flags = {CoverTriangle{}};
+    for (std::size_t i = 0; i < flags.size(); ++i) {
       for (Side side : kSides) {
-        const CoverTriangle t = pairing.flags[i];
+        const CoverTriangle t = flags[i];
         if (on_boundary(t, side)) continue;
         const CoverTriangle next = cover_.across(t, side);
         if (seen.count(next.element) > 0) {
           // A triangle met again must be the same triangle of the cover, not another lift.
           const Point centre = cover_.corner(next, kO);
           bool placed = false;
-          for (const CoverTriangle& f : pairing.flags) {
+          for (const CoverTriangle& f : flags) {
             if (f.element == next.element && same_point(g, cover_.corner(f, kO), centre))
               placed = true;
           }
@@ -338,16 +325,17 @@ class PairingFinder {
           continue;
         }
         seen.insert(next.element);
-        pairing.flags.push_back(next);
-        if (pairing.flags.size() > k_) return false;
+        flags.push_back(next);
+        if (flags.size() > k_) return false;
       }
     }
-    return pairing.flags.size() == k_;
+    return flags.size() == k_;
   }
 
   const FiniteGroup& source_;
   const ElementWords& words_;
   const Presentation& target_;
+  std::vector<Word> relators_;  // T's defining relators
   std::size_t target_order_;
   PairingLimits limits_;
   Cover cover_;
@@ -359,46 +347,69 @@ class PairingFinder {
 
 }  // namespace
 
-double Pairing::distortion() const {
-  // Legs `leg`, base `base`; the summit follows from the other three (it is longer than the base).
-  const double lo = std::min(leg, base), hi = std::max(leg, base);
-  return lo > 0 ? hi / lo : 0.0;
+const char* to_string(PairingKind kind) {
+  return kind == PairingKind::Reflections ? "reflections" : "rotations";
 }
 
-PairingSearch find_pairings(const FiniteGroup& source, const ElementWords& words,
-                            const Presentation& target, std::size_t target_order,
-                            const PairingLimits& limits) {
+void check_hyperbolic(const FiniteGroup& source) {
   if (geometry_of_type(source.p, source.q) != Geometry::Hyperbolic)
     throw InputError(
         "a map is drawn on another map's surface only when it is hyperbolic (genus "
         "2 or more); {" +
         std::to_string(source.p) + "," + std::to_string(source.q) + "} is not");
+}
+
+PairingSearch find_reflection_pairings(const FiniteGroup& source, const ElementWords& words,
+                                       const Presentation& target, std::size_t target_order,
+                                       const PairingLimits& limits) {
+  check_hyperbolic(source);
   if (target.q < 3 || target_order == 0 || source.order() % target_order != 0) return {};
   return PairingFinder(source, words, target, target_order, limits).run();
 }
 
-std::vector<Element> pairing_images(const FiniteGroup& target, const ElementWords& source_words,
-                                    const Pairing& pairing) {
+PairingSearch find_pairings(const FiniteGroup& source, const ElementWords& words,
+                            const Presentation& target, const FiniteGroup& target_group,
+                            const PairingLimits& limits) {
+  PairingSearch result =
+      find_reflection_pairings(source, words, target, target_group.order(), limits);
+  PairingLimits rest = limits;
+  rest.max_steps = limits.max_steps > result.steps ? limits.max_steps - result.steps : 0;
+  PairingSearch rotations = find_rotation_pairings(source, words, target, target_group, rest);
+  for (Pairing& p : rotations.pairings) {
+    const bool known = std::any_of(result.pairings.begin(), result.pairings.end(),
+                                   [&](const Pairing& r) { return r.x == p.x && r.y == p.y; });
+    if (!known) result.pairings.push_back(std::move(p));
+  }
+  result.candidates += rotations.candidates;
+  result.steps += rotations.steps;
+  result.stopped = result.stopped || rotations.stopped;
+  return result;
+}
+
+std::vector<Element> rotation_images(const FiniteGroup& target, const ElementWords& source_words,
+                                     Element x, Element y) {
   const FiniteGroup& source = source_words.group();
-  const Word wa = source_words.word(pairing.a), wb = source_words.word(pairing.b),
-             wc = source_words.word(pairing.c);
-  auto cat = [](const Word& x, const Word& y) {
-    Word w = x;
-    w.insert(w.end(), y.begin(), y.end());
-    return w;
-  };
-  const std::array<Word, kLetterCount> image = {cat(wb, wc), cat(wc, wb), cat(wc, wa), cat(wa, wc),
-                                                wc};
+  const Word wx = source_words.word(x);
+  const Word wr = source_words.word(source_words.multiply(y, source_words.inverse(x)));
+  const std::array<std::pair<Letter, const Word*>, 2> steps = {{{R, &wr}, {S, &wx}}};
   std::vector<Element> phi(target.order(), -1);
   phi[0] = 0;
   std::vector<Element> queue = {0};
+  std::vector<bool> hit(source.order(), false);
+  hit[0] = true;
   for (std::size_t k = 0; k < queue.size(); ++k) {
     const Element g = queue[k];
-    for (int x = 0; x < kLetterCount; ++x) {
-      const Element h = target.times(g, static_cast<Letter>(x));
-      if (phi[static_cast<std::size_t>(h)] >= 0) continue;
-      phi[static_cast<std::size_t>(h)] =
-          source.times(phi[static_cast<std::size_t>(g)], image[static_cast<std::size_t>(x)]);
+    for (const auto& [letter, image] : steps) {
+      const Element h = target.times(g, letter);
+      const Element e = source.times(phi[static_cast<std::size_t>(g)], *image);
+      Element& known = phi[static_cast<std::size_t>(h)];
+      if (known >= 0) {
+        if (known != e) return {};
+        continue;
+      }
+      if (hit[static_cast<std::size_t>(e)]) return {};
+      hit[static_cast<std::size_t>(e)] = true;
+      known = e;
       queue.push_back(h);
     }
   }

@@ -23,6 +23,11 @@
 // and L4 must pass through P4 at angle pi/q_T. The walk along L1 ends where y would be shorter
 // than any side of D0. Every candidate is then checked in the group, and the flag triangles of hQ
 // are collected by a flood fill from D0 that does not cross L1..L4.
+//
+// Where no three reflections pair (the Hurwitz maps, and the thesis's showcase pairs R9.3' on
+// R2.1', R5.8 on R2.4, R13.2' on R3.4'), rotations may: rotation_pairing.cpp pairs Sym+(T) with
+// rotations of M, Q and c Q then being geodesic quadrilaterals whose sides need not lie on M's
+// mirrors (the drawing cuts M's tiling along them).
 #pragma once
 
 #include <array>
@@ -30,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "regmap/cover.h"
 #include "regmap/element_words.h"
 #include "regmap/finite_group.h"
 #include "regmap/isometry.h"
@@ -38,44 +44,59 @@
 
 namespace tessera::regmap {
 
-// A triangle of M's tiling in the universal cover: its element and its placement (D0 -> it).
-struct CoverTriangle {
-  Element element = 0;
-  Isometry placement;
-};
+enum class PairingKind { Reflections, Rotations };
+const char* to_string(PairingKind kind);
 
+// A pairing in the form the drawing uses: the images x = phi(S) (the rotation by 2pi/q_T about the
+// junction pole P1) and y = phi(R S) (the half-turn about P2 on the tube's midpoint) of Sym+(T)'s
+// generators, and the quadrilaterals of quarter tube Q and of its mirror image c Q across the
+// junction side, which share the side P4 P1. Reflection pairings also keep a', b', c' (then
+// x = c' a', y = b' a', and c Q = c' hQ).
 struct Pairing {
   std::string target;
-  Element a = 0, b = 0, c = 0;       // the images of T's a, b, c in Sym(M)
-  std::array<Point, 4> corners;      // P1..P4 in the Poincare disk
-  Corner apex = kN;                  // what P1 is: a vertex (kN) or a face centre (kM) of M
-  double leg = 0.0;                  // |P1 P2| = |P3 P4|
-  double base = 0.0;                 // |P2 P3|
-  std::vector<CoverTriangle> flags;  // the k flag triangles of M that make hQ
-  // hQ's shape: its longest side over its shortest (hyperbolic lengths); 1 is best.
-  double distortion() const;
+  PairingKind kind = PairingKind::Reflections;
+  Element x = 0, y = 0;           // the images of S and R S in Sym+(M)
+  Element a = 0, b = 0, c = 0;    // Reflections: the images of T's a, b, c in Sym(M)
+  std::array<Point, 4> corners;   // Q: P1..P4 in the Poincare disk (counterclockwise)
+  std::array<Point, 4> mirrored;  // c Q: P1, X P2, X' P3, P4 (clockwise)
+  Corner apex = kN;               // what P1 is: a vertex (kN) or a face centre (kM) of M
+  // Q's shape: its longest side over its shortest (hyperbolic lengths), times one plus how far
+  // its angles are from halving the cone angles at its corners; 1 is best.
+  double distortion = 0.0;
 };
 
 struct PairingLimits {
-  std::size_t max_steps = 2'000'000;  // triangles visited by the line walks, over all candidates
+  std::size_t max_steps = 2'000'000;  // triangles visited, over all candidates
+  double radius = 4.5;                // rotation pairings: P2, P3 within this distance of P1
 };
 
 struct PairingSearch {
-  std::vector<Pairing> pairings;  // distinct (a', b', c'), least distorted first
+  std::vector<Pairing> pairings;  // distinct (x, y): reflections first, least distorted first
   std::size_t candidates = 0;     // quadrilaterals that closed geometrically
   std::size_t steps = 0;          // triangles the walks visited
   bool stopped = false;           // the walks hit limits.max_steps
 };
 
-// Throws InputError when M is not hyperbolic (its genus is below 2).
-// `target_order` is |Sym(T)| = 4E_T; `target` its presentation (for its relators and q_T).
+// Reflection pairings (see above), then rotation pairings (rotation_pairing.cpp) where no
+// reflection pairing has the same (x, y). Throws InputError when M is not hyperbolic (its genus
+// is below 2). `target` is T's presentation, `target_group` Sym(T) enumerated.
 PairingSearch find_pairings(const FiniteGroup& source, const ElementWords& words,
-                            const Presentation& target, std::size_t target_order,
+                            const Presentation& target, const FiniteGroup& target_group,
                             const PairingLimits& limits = {});
+PairingSearch find_reflection_pairings(const FiniteGroup& source, const ElementWords& words,
+                                       const Presentation& target, std::size_t target_order,
+                                       const PairingLimits& limits = {});
+PairingSearch find_rotation_pairings(const FiniteGroup& source, const ElementWords& words,
+                                     const Presentation& target, const FiniteGroup& target_group,
+                                     const PairingLimits& limits = {});
 
-// phi(g) for every element g of Sym(T) (T's own coset table), by phi(g x) = phi(g) phi(x) with
-// phi(R) = b' c', phi(S) = c' a', phi(T) = c'.
-std::vector<Element> pairing_images(const FiniteGroup& target, const ElementWords& source_words,
-                                    const Pairing& pairing);
+// Throws InputError naming M's type when M is not hyperbolic.
+void check_hyperbolic(const FiniteGroup& source);
+
+// phi(g) for every g of Sym+(T) (T's own coset table; -1 for T's orientation-reversing
+// elements), by phi(g R) = phi(g) y x^-1 and phi(g S) = phi(g) x; empty when that does not define
+// a homomorphism or when it is not one to one.
+std::vector<Element> rotation_images(const FiniteGroup& target, const ElementWords& source_words,
+                                     Element x, Element y);
 
 }  // namespace tessera::regmap
