@@ -46,6 +46,7 @@ constexpr const char* kRegmapHelp =
     "  tiling <map>    draw the map's fundamental polygon Tri(G) with its boundary pairs as SVG\n"
     "  surface <map>   build the map's regular surface: its edge graph tubified (GLB, PLY, OBJ)\n"
     "  map <map>       draw the map on the regular surface of a target map of its genus\n"
+    "  realize         pair every catalog map (and dual) with its best target: the manifest\n"
     "\n"
     "<map> is a catalog name (R3.1, or R3.1' for the dual) or a file holding one entry in "
     "Conder's\n"
@@ -140,8 +141,23 @@ constexpr const char* kMapHelp =
     "                   quarter tube's grid (default 2)\n"
     "  --max-steps N    work limit of the pairing search per target, triangles walked\n"
     "                   (default 2000000)\n"
+    "  --radius R       rotation pairings: corners within this hyperbolic distance of P1\n"
+    "                   (default 4.5)\n"
     "  --no-self-intersections   skip the self-intersection count\n"
     "  --max-cosets N, --max-seconds S, --max-file-bytes N   as for 'tessera regmap info'\n";
+
+constexpr const char* kRealizeHelp =
+    "usage: tessera regmap realize [--genus G | --genus G..H] [-o realizations.json] [--json]\n"
+    "\n"
+    "The automatic realization (thesis Sec. 9.6): every catalog map of the genus range and its\n"
+    "dual is paired with every target of its genus (see 'tessera regmap map --help'); the best\n"
+    "ranked target is kept with its pairing, the others that work are listed. Prints the counts;\n"
+    "-o writes the manifest {version, genus, maps: [{source, genus, target, target_kind, score,\n"
+    "others, pairing}], unrealized: [names]} that the page reads instead of searching.\n"
+    "  --genus G..H    the genus range (default 2..101)\n"
+    "  --max-steps N   work limit of each pairing search (default 2000000)\n"
+    "  --radius R      rotation pairings: corners within this hyperbolic distance (default 4.5)\n"
+    "  --json          print the counts as JSON\n";
 
 bool wants_help(const Args& args) {
   for (const std::string& a : args) {
@@ -426,8 +442,9 @@ regmap::Realization pick_target(const regmap::FiniteGroup& source,
   } else {
     targets = regmap::all_targets(catalog, genus);
   }
+  regmap::TargetGroups groups(limits);
   const regmap::RealizationSearch search =
-      regmap::find_realizations(source, words, genus, targets, pairing_limits, limits);
+      regmap::find_realizations(source, words, genus, targets, pairing_limits, groups);
   if (!search.found.empty()) return search.found.front();
   std::string tried;
   for (const std::string& t : search.tried) tried += (tried.empty() ? "" : ", ") + t;
@@ -438,28 +455,10 @@ regmap::Realization pick_target(const regmap::FiniteGroup& source,
       (search.stopped ? " (the search stopped at --max-steps on some; raise it)" : ""));
 }
 
-nlohmann::ordered_json corners_json(const std::array<regmap::Point, 4>& corners) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const regmap::Point& c : corners) {
-    const regmap::Complex z = regmap::to_plane(c);
-    out.push_back({z.real(), z.imag()});
-  }
-  return out;
-}
-
-nlohmann::ordered_json pairing_json(const regmap::Pairing& p) {
-  nlohmann::ordered_json out = {
-      {"target", p.target}, {"kind", regmap::to_string(p.kind)}, {"x", p.x}, {"y", p.y}};
-  if (p.kind == regmap::PairingKind::Reflections) {
-    out["a"] = p.a;
-    out["b"] = p.b;
-    out["c"] = p.c;
-  }
-  out["apex"] = p.apex == regmap::kN ? "vertex" : "face";
-  out["distortion"] = p.distortion;
-  out["corners"] = corners_json(p.corners);
-  out["mirrored"] = corners_json(p.mirrored);
-  return out;
+double radius_from(const ParsedArgs& parsed, double fallback) {
+  const double r = parsed.number("--radius", fallback);
+  if (!(r > 0.5 && r <= 8.0)) throw UsageError("--radius expects a distance in (0.5, 8]");
+  return r;
 }
 
 int map_on_target(const Args& args) {
@@ -468,7 +467,7 @@ int map_on_target(const Args& args) {
     return 0;
   }
   const ParsedArgs parsed = parse_args(args,
-                                       {"-o", "--on", "--subdivisions", "--max-steps",
+                                       {"-o", "--on", "--subdivisions", "--max-steps", "--radius",
                                         "--max-cosets", "--max-seconds", "--max-file-bytes"},
                                        {"--json", "--no-self-intersections"}, "regmap map");
   if (parsed.positional.size() != 1)
@@ -480,6 +479,7 @@ int map_on_target(const Args& args) {
   if (!output.empty()) check_mesh_format(output);
   regmap::PairingLimits pairing_limits;
   pairing_limits.max_steps = parsed.count("--max-steps", pairing_limits.max_steps);
+  pairing_limits.radius = radius_from(parsed, pairing_limits.radius);
   regmap::MappedMapOptions options;
   options.subdivisions = static_cast<int>(parsed.count("--subdivisions", 0));
   if (options.subdivisions > 64) throw UsageError("--subdivisions expects 1..64");
@@ -526,7 +526,7 @@ int map_on_target(const Args& args) {
       {"subdivisions", s.subdivisions},
       {"mesh_vertices", s.mesh_vertices},
       {"mesh_faces", s.mesh_faces},
-      {"pairing", pairing_json(chosen.pairing)},
+      {"pairing", regmap::pairing_json(chosen.pairing)},
       {"seconds", seconds}};
   if (!output.empty()) {
     Scene scene;
@@ -560,6 +560,118 @@ int map_on_target(const Args& args) {
   return 0;
 }
 
+// "G" or "G..H", within 2..101.
+std::pair<int, int> parse_genus_range(const std::string& text) {
+  const std::size_t dots = text.find("..");
+  auto number = [&](const std::string& part) {
+    if (part.empty() || part.size() > 3 ||
+        !std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      throw UsageError("--genus expects G or G..H with 2 <= G <= H <= 101, not '" + text + "'");
+    return std::stoi(part);
+  };
+  const int lo = number(text.substr(0, dots));
+  const int hi = dots == std::string::npos ? lo : number(text.substr(dots + 2));
+  if (lo < 2 || hi > 101 || lo > hi)
+    throw UsageError("--genus expects G or G..H with 2 <= G <= H <= 101, not '" + text + "'");
+  return {lo, hi};
+}
+
+int realize(const Args& args) {
+  if (wants_help(args)) {
+    std::fputs(kRealizeHelp, stdout);
+    return 0;
+  }
+  const ParsedArgs parsed = parse_args(
+      args, {"--genus", "-o", "--max-steps", "--radius", "--max-cosets", "--max-seconds"},
+      {"--json"}, "regmap realize");
+  if (!parsed.positional.empty())
+    throw UsageError("'tessera regmap realize' takes no map; run 'tessera regmap realize --help'");
+  const auto [lo, hi] =
+      parse_genus_range(parsed.has("--genus") ? parsed.value("--genus") : "2..101");
+  const Limits limits = limits_from(parsed);
+  regmap::PairingLimits pairing_limits;
+  pairing_limits.max_steps = parsed.count("--max-steps", pairing_limits.max_steps);
+  pairing_limits.radius = radius_from(parsed, pairing_limits.radius);
+  const std::string output = parsed.value("-o");
+  const auto start = std::chrono::steady_clock::now();
+  const regmap::Catalog catalog = regmap::read_catalog(catalog_path());
+  const std::vector<regmap::TargetMap> targets = regmap::all_targets(catalog, hi);
+  regmap::TargetGroups groups(limits);
+  Json maps = Json::array(), unrealized = Json::array();
+  std::size_t sources = 0, non_hosohedral = 0, by_reflections = 0, errors = 0;
+  int highest = 0;
+  std::set<std::string> seen;
+  for (const regmap::CatalogEntry& row : catalog) {
+    if (row.genus < lo || row.genus > hi) continue;
+    for (const regmap::CatalogEntry& entry : {row, regmap::dual(row)}) {
+      if (!seen.insert(entry.name).second) continue;
+      ++sources;
+      try {
+        const regmap::FiniteGroup group =
+            regmap::enumerate_group(regmap::presentation_of(entry), limits);
+        const regmap::ElementWords words(group);
+        const regmap::RealizationSearch search =
+            regmap::find_realizations(group, words, entry.genus, targets, pairing_limits, groups);
+        if (search.found.empty()) {
+          unrealized.push_back(entry.name);
+          continue;
+        }
+        const regmap::Realization& best = search.found.front();
+        Json others = Json::array();
+        for (std::size_t k = 1; k < search.found.size(); ++k)
+          others.push_back(search.found[k].target.name);
+        maps.push_back({{"source", entry.name},
+                        {"genus", entry.genus},
+                        {"target", best.target.name},
+                        {"target_kind", regmap::to_string(best.target.kind)},
+                        {"score", best.score},
+                        {"others", others},
+                        {"pairing", regmap::pairing_json(best.pairing)}});
+        if (best.target.kind != regmap::TargetKind::Hosohedron) ++non_hosohedral;
+        if (best.pairing.kind == regmap::PairingKind::Reflections) ++by_reflections;
+        highest = std::max(highest, entry.genus);
+      } catch (const Error& e) {
+        ++errors;
+        unrealized.push_back(entry.name);
+        std::fprintf(stderr, "tessera: %s: %s\n", entry.name.c_str(), e.what());
+      }
+      if (sources % 100 == 0)
+        std::fprintf(stderr, "tessera: realize %zu maps, %zu realized, %.0f s\n", sources,
+                     maps.size(), seconds_since(start));
+    }
+  }
+  const double seconds = seconds_since(start);
+  const Json counts = {{"genus", {lo, hi}},
+                       {"maps", sources},
+                       {"realized", maps.size()},
+                       {"non_hosohedral", non_hosohedral},
+                       {"by_reflections", by_reflections},
+                       {"by_rotations", maps.size() - by_reflections},
+                       {"errors", errors},
+                       {"highest_genus", highest},
+                       {"seconds", seconds}};
+  if (!output.empty()) {
+    const Json manifest = {{"version", 1},
+                           {"generated_by", "tessera regmap realize"},
+                           {"counts", counts},
+                           {"maps", maps},
+                           {"unrealized", unrealized}};
+    const std::string text = manifest.dump() + "\n";
+    write_file_bytes(output, std::vector<std::uint8_t>(text.begin(), text.end()));
+  }
+  if (parsed.has("--json")) {
+    std::printf("%s\n", counts.dump(2).c_str());
+    return 0;
+  }
+  std::printf(
+      "genus %d..%d: %zu maps, %zu realized (%zu on non-hosohedral surfaces; %zu by reflections, "
+      "%zu by rotations), highest genus %d, %.1f s\n",
+      lo, hi, sources, maps.size(), non_hosohedral, by_reflections, maps.size() - by_reflections,
+      highest, seconds);
+  if (!output.empty()) std::printf("  wrote %s\n", output.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int regmap_command(const Args& args) {
@@ -578,6 +690,7 @@ int regmap_command(const Args& args) {
   if (sub == "tiling") return tiling(rest);
   if (sub == "surface") return surface(rest);
   if (sub == "map") return map_on_target(rest);
+  if (sub == "realize") return realize(rest);
   throw UsageError("unknown subcommand 'regmap " + sub + "'; run 'tessera regmap --help'");
 }
 

@@ -3,6 +3,7 @@
 // what was tried when there is no pairing or the target does not fit.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -74,6 +75,33 @@ TEST(RegmapMapCli, NoPairingOrAWrongTargetExitsWithTwo) {
                            "regmap map R3.4 -o out.xyz", "regmap map R3.4 --subdivisions 500"}) {
     const auto r = run_cli(args, true);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out;
+  }
+}
+
+// The batch over genus 3: every catalog map of genus 3 and its dual searched, the Klein quartic
+// realized on the tetrahedron, the manifest's pairing one the drawing accepts.
+TEST(RegmapRealizeCli, CountsAndManifestOfGenusThree) {
+  const std::string manifest_path = test::temp_path("realizations_g3.json");
+  const auto r = run_cli("regmap realize --genus 3 -o '" + manifest_path + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto counts = nlohmann::json::parse(r.out);
+  EXPECT_GT(counts["maps"].get<int>(), 10);
+  EXPECT_GE(counts["realized"].get<int>(), 5);
+  EXPECT_EQ(counts["highest_genus"], 3);
+  std::ifstream in(manifest_path);
+  const auto manifest = nlohmann::json::parse(in);
+  EXPECT_EQ(manifest["maps"].size(), counts["realized"].get<std::size_t>());
+  bool klein = false;
+  for (const auto& m : manifest["maps"]) {
+    EXPECT_EQ(m["genus"], 3);
+    EXPECT_TRUE(m["pairing"].contains("corners"));
+    if (m["source"] == "R3.1") klein = m["target"] == "Tetrahedron";
+  }
+  EXPECT_TRUE(klein);
+  for (const char* args : {"regmap realize --genus 1", "regmap realize --genus 5..3",
+                           "regmap realize --genus x", "regmap realize R3.1"}) {
+    const auto bad = run_cli(args, true);
+    EXPECT_EQ(bad.exit_code, 2) << args << "\n" << bad.out;
   }
 }
 

@@ -14,6 +14,7 @@
 #include "regmap/catalog.h"
 #include "regmap/mapped_map.h"
 #include "regmap/pairing.h"
+#include "regmap/realization.h"
 #include "regmap/target_maps.h"
 
 namespace tessera::regmap {
@@ -213,6 +214,36 @@ TEST(RegmapMappedMap, DrawsThroughRotationPairings) {
   expect_drawn("R3.1", "Tetrahedron");
   expect_drawn("R9.3'", "R2.1'");
   expect_drawn("R5.8", "R2.4");
+}
+
+// The manifest's form of a pairing reads back as the same pairing, and a damaged one is refused.
+TEST(RegmapRealization, PairingJsonRoundTripsAndIsValidated) {
+  const Drawn d = search("R3.1", "Tetrahedron");
+  ASSERT_FALSE(d.search.pairings.empty());
+  const Pairing& p = d.search.pairings[0];
+  const nlohmann::json json = pairing_json(p);
+  const Pairing back = pairing_from_json(json, d.source.order());
+  EXPECT_EQ(back.target, p.target);
+  EXPECT_EQ(back.kind, p.kind);
+  EXPECT_EQ(back.x, p.x);
+  EXPECT_EQ(back.y, p.y);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_LT(std::abs(to_plane(back.corners[i]) - to_plane(p.corners[i])), 1e-12);
+    EXPECT_LT(std::abs(to_plane(back.mirrored[i]) - to_plane(p.mirrored[i])), 1e-12);
+  }
+  for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
+           {"x", 336},
+           {"y", -1},
+           {"kind", "glides"},
+           {"corners", {{0, 0}}},
+           {"mirrored", {{0, 0}, {0.5, 0}, {2.0, 0}, {0, 0.5}}}}) {
+    nlohmann::json bad = json;
+    bad[key] = value;
+    EXPECT_THROW(pairing_from_json(bad, d.source.order()), InputError) << key;
+  }
+  nlohmann::json missing = json;
+  missing.erase("target");
+  EXPECT_THROW(pairing_from_json(missing, d.source.order()), InputError);
 }
 
 // A pairing found for one target does not glue on another target's surface of another size.

@@ -585,6 +585,59 @@ void flip_to_delaunay(Template& shape, int columns, int across,
   }
 }
 
+// Moves every free vertex (inside one of M's faces, off the sides and off M's edges) to the mean
+// of its neighbours, a few times, in the grid's metric: the slivers the cut pieces leave become
+// better shaped triangles. A move that would turn a triangle over is not made.
+void smooth(Template& shape, const std::vector<std::int32_t>& face_of_flag) {
+  const std::size_t nv = shape.st.size();
+  std::vector<bool> free(nv, true);
+  for (const auto& side : shape.side)
+    for (const auto& [p, v] : side) free[static_cast<std::size_t>(v)] = false;
+  for (const auto& [u, v] : shape.map_edges)
+    free[static_cast<std::size_t>(u)] = free[static_cast<std::size_t>(v)] = false;
+  std::vector<std::int32_t> face(nv, -1);
+  std::vector<std::vector<std::size_t>> around(nv);
+  for (std::size_t t = 0; t < shape.triangles.size(); ++t) {
+    const std::int32_t f = face_of_flag[static_cast<std::size_t>(shape.triangle_flag[t])];
+    for (std::int32_t v : shape.triangles[t]) {
+      const auto i = static_cast<std::size_t>(v);
+      if (face[i] >= 0 && face[i] != f) free[i] = false;
+      face[i] = f;
+      around[i].push_back(t);
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (shape.kind[v] != VertexKind::Interior) free[v] = false;
+  auto turns_left = [&](std::size_t t) {
+    const auto& tri = shape.triangles[t];
+    const Vector2d& a = shape.st[static_cast<std::size_t>(tri[0])];
+    return cross(shape.st[static_cast<std::size_t>(tri[1])] - a,
+                 shape.st[static_cast<std::size_t>(tri[2])] - a) > 0;
+  };
+  for (int pass = 0; pass < 4; ++pass) {
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (!free[v] || around[v].empty()) continue;
+      Vector2d sum = Vector2d::Zero();
+      double count = 0;
+      for (std::size_t t : around[v]) {
+        for (std::int32_t w : shape.triangles[t]) {
+          if (static_cast<std::size_t>(w) == v) continue;
+          sum += shape.st[static_cast<std::size_t>(w)];
+          count += 1;
+        }
+      }
+      const Vector2d old = shape.st[v];
+      shape.st[v] = sum / count;
+      for (std::size_t t : around[v]) {
+        if (!turns_left(t)) {
+          shape.st[v] = old;
+          break;
+        }
+      }
+    }
+  }
+}
+
 struct TileSides {
   Permutation junction, seam, midpoint;  // the tile across side a, b (= d), c
 };
@@ -749,6 +802,8 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
   std::array<Template, 2> shapes = {plain.build(n), mirrored.build(n)};
   for (Template& shape : shapes) {
     refine_to_grid(shape, first.columns, first.across);
+    flip_to_delaunay(shape, first.columns, first.across, faces.label);
+    smooth(shape, faces.label);
     flip_to_delaunay(shape, first.columns, first.across, faces.label);
     for (auto& side : shape.side) std::sort(side.begin(), side.end());
   }

@@ -4,8 +4,11 @@
 // mirrors) before rotation pairings, each by its quadrilateral's distortion; then more junctions.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "base/limits.h"
 #include "regmap/element_words.h"
@@ -29,10 +32,29 @@ struct RealizationSearch {
 
 double realization_score(const TargetMap& target, const Pairing& pairing);
 
-// Searches `targets` (those of other genus are skipped) for pairings with M; each target's
-// group is enumerated under `limits`.
+// Targets' groups, enumerated once each (a batch over the catalog meets every target often).
+class TargetGroups {
+ public:
+  explicit TargetGroups(const Limits& limits) : limits_(limits) {}
+  const FiniteGroup& group(const TargetMap& target);
+
+ private:
+  Limits limits_;
+  std::map<std::string, FiniteGroup> groups_;
+};
+
+// Searches `targets` (those of other genus are skipped) for pairings with M.
 RealizationSearch find_realizations(const FiniteGroup& source, const ElementWords& words, int genus,
                                     const std::vector<TargetMap>& targets,
-                                    const PairingLimits& pairing_limits, const Limits& limits);
+                                    const PairingLimits& pairing_limits, TargetGroups& groups);
+
+// A pairing as the manifest (data/regmaps/realizations.json) and the GLB's extras keep it:
+// target, kind, x, y (a, b, c for reflections), apex, distortion, corners and mirrored as
+// [re, im] pairs in the Poincare disk.
+nlohmann::ordered_json pairing_json(const Pairing& pairing);
+// Throws InputError naming the key when `json` is not such a pairing or an element is outside
+// Sym(M) of order `source_order` (a manifest is a file, not trusted); the drawing checks the
+// rest (that it glues and covers M once).
+Pairing pairing_from_json(const nlohmann::json& json, std::size_t source_order);
 
 }  // namespace tessera::regmap
