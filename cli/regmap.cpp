@@ -15,6 +15,7 @@
 #include "regmap/conder_format.h"
 #include "regmap/finite_group.h"
 #include "regmap/map_json.h"
+#include "regmap/mapped_export.h"
 #include "regmap/mapped_map.h"
 #include "regmap/pairing.h"
 #include "regmap/realization.h"
@@ -495,52 +496,15 @@ int map_on_target(const Args& args) {
   const regmap::ElementWords words(group);
   const regmap::Realization chosen = pick_target(group, words, figures.genus, parsed.value("--on"),
                                                  pairing_limits, limits, presentation.name);
-  const regmap::FiniteGroup target_group =
-      regmap::enumerate_group(chosen.target.presentation, limits);
-  regmap::SurfaceOptions surface_options;
-  surface_options.find_self_intersections = false;
-  const regmap::RegularSurface surface = regmap::build_regular_surface(
-      chosen.target.presentation, target_group, surface_options, limits, stderr_progress());
-  const regmap::MappedMap drawn =
-      regmap::map_onto_surface(group, words, chosen.pairing, surface, options, stderr_progress());
+  const regmap::DrawnMap map =
+      regmap::draw_realization(group, words, chosen, options, limits, stderr_progress());
   const double seconds = seconds_since(start);
-  const regmap::MappedMapStats& s = drawn.stats;
-  nlohmann::ordered_json out = {
-      {"source", presentation.name},
-      {"target", chosen.target.name},
-      {"target_kind", regmap::to_string(chosen.target.kind)},
-      {"genus", s.genus},
-      {"V", s.vertices},
-      {"E", s.edges},
-      {"F", s.faces},
-      {"expected", {{"V", figures.vertices}, {"E", figures.edges}, {"F", figures.faces}}},
-      {"faces_are_disks", s.faces_are_disks},
-      {"covers_once", s.covers_once},
-      {"closed", s.closed},
-      {"oriented", s.oriented},
-      {"self_intersections", s.self_intersections_searched
-                                 ? nlohmann::ordered_json(s.self_intersections)
-                                 : nlohmann::ordered_json(nullptr)},
-      {"symmetries_verified", surface.stats.symmetries_verified},
-      {"surface_base", surface.stats.base},
-      {"subdivisions", s.subdivisions},
-      {"mesh_vertices", s.mesh_vertices},
-      {"mesh_faces", s.mesh_faces},
-      {"pairing", regmap::pairing_json(chosen.pairing)},
-      {"seconds", seconds}};
-  if (!output.empty()) {
-    Scene scene;
-    scene.mesh = drawn.mesh;
-    for (std::int32_t face : drawn.mesh.face_attributes.at(regmap::kFaceAttribute))
-      scene.face_colors.push_back(regmap::quarter_tube_color(face));
-    LineSet edges;
-    edges.name = "edges";
-    for (const auto& [a, b] : drawn.edge_segments)
-      edges.polylines.push_back({drawn.mesh.positions[a], drawn.mesh.positions[b]});
-    scene.line_sets.push_back(std::move(edges));
-    scene.extras = {{"map", presentation.name}, {"mapped", out}};
-    write_file_bytes(output, encode_scene(scene, output));
-  }
+  const regmap::MappedMapStats& s = map.drawn.stats;
+  const nlohmann::ordered_json out =
+      regmap::drawn_map_json(presentation.name, figures, map, seconds);
+  if (!output.empty())
+    write_file_bytes(output,
+                     encode_scene(regmap::drawn_map_scene(map, presentation.name, out), output));
   if (parsed.has("--json")) {
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
@@ -549,8 +513,8 @@ int map_on_target(const Args& args) {
       "%s drawn on the surface of %s (%s)\n"
       "  V %zu, E %zu, F %zu found (the map has %zu, %zu, %zu); faces are disks: %s\n"
       "  closed %s, oriented %s, genus %ld, quarter tubes cover the flags once: %s\n",
-      presentation.name.c_str(), chosen.target.name.c_str(), surface.stats.base.c_str(), s.vertices,
-      s.edges, s.faces, figures.vertices, figures.edges, figures.faces,
+      presentation.name.c_str(), chosen.target.name.c_str(), map.surface.stats.base.c_str(),
+      s.vertices, s.edges, s.faces, figures.vertices, figures.edges, figures.faces,
       s.faces_are_disks ? "yes" : "no", s.closed ? "yes" : "no", s.oriented ? "yes" : "no", s.genus,
       s.covers_once ? "yes" : "no");
   if (s.self_intersections_searched)

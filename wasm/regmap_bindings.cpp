@@ -8,6 +8,9 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "export/glb.h"
 #include "guard.h"
@@ -17,8 +20,10 @@
 #include "regmap/conder_format.h"
 #include "regmap/finite_group.h"
 #include "regmap/map_json.h"
+#include "regmap/mapped_export.h"
 #include "regmap/regular_surface.h"
 #include "regmap/surface_export.h"
+#include "regmap/target_maps.h"
 #include "regmap/tiling_svg.h"
 #include "regmap/triangle_tiling.h"
 #include "typed_arrays.h"
@@ -161,6 +166,115 @@ val surface_glb() {
   });
 }
 
+// The last map drawn on a surface, kept for its GLB export.
+struct LastDrawn {
+  std::string name;
+  regmap::DrawnMap map;
+  nlohmann::ordered_json figures;
+};
+std::optional<LastDrawn>& last_drawn() {
+  static std::optional<LastDrawn> drawn;
+  return drawn;
+}
+
+std::string string_option(const val& options, const char* key) {
+  if (options.isUndefined() || options.isNull()) return {};
+  const val v = options[key];
+  if (v.isUndefined() || v.isNull()) return {};
+  if (!v.isString()) throw InputError(std::string("option '") + key + "' must be text");
+  return v.as<std::string>();
+}
+
+// The realization to draw: the manifest's pairing when the worker hands one in (options.pairing,
+// its JSON text; it is checked like any file), else the best of a search over options.on or
+// every target of the map's genus. `others`: the other targets found to work.
+regmap::Realization choose_realization(const Enumerated& e, const regmap::ElementWords& words,
+                                       const val& options, std::vector<std::string>& others) {
+  const std::string pairing = string_option(options, "pairing");
+  const std::string on = string_option(options, "on");
+  if (!pairing.empty()) {
+    const nlohmann::json json = nlohmann::json::parse(pairing, nullptr, false);
+    if (json.is_discarded()) throw InputError("the realization's pairing is not JSON");
+    regmap::Realization r;
+    r.pairing = regmap::pairing_from_json(json, e.group.order());
+    r.target = regmap::find_target(*catalog(), r.pairing.target);
+    if (r.target.surface_genus() != e.figures.genus)
+      throw InputError("the realization's target " + r.target.name + " has another genus");
+    return r;
+  }
+  std::vector<regmap::TargetMap> targets;
+  if (!on.empty())
+    targets.push_back(regmap::find_target(*catalog(), on));
+  else
+    targets = regmap::all_targets(*catalog(), e.figures.genus);
+  regmap::TargetGroups groups(page_limits());
+  const regmap::RealizationSearch search =
+      regmap::find_realizations(e.group, words, e.figures.genus, targets, {}, groups);
+  if (search.found.empty()) {
+    std::string tried;
+    for (const std::string& t : search.tried) tried += (tried.empty() ? "" : ", ") + t;
+    throw InputError(
+        e.presentation.name + " has no pairing with " +
+        (tried.empty() ? "any target of genus " + std::to_string(e.figures.genus) : tried) +
+        ": it cannot be drawn on a surface of its genus here");
+  }
+  for (std::size_t k = 1; k < search.found.size(); ++k)
+    others.push_back(search.found[k].target.name);
+  return search.found.front();
+}
+
+// { info, drawn: drawn_map_json, others: [target names], positions, triangles, triangleFace,
+//   face: Int32Array (per face of the drawing: M's face), tile: Int32Array (its quarter tube),
+//   edges: Float32Array (M's edges, 6 numbers per segment) }
+val map_drawn(const std::string& spec, const val& options, const val& on_progress) {
+  return guard([&] {
+    const auto start = std::chrono::steady_clock::now();
+    const Enumerated e = enumerate(spec);
+    if (!e.figures.orientable)
+      throw InputError(e.presentation.name + " is not orientable: it has no surface to lie on");
+    last_drawn().reset();
+    const regmap::ElementWords words(e.group);
+    std::vector<std::string> others;
+    const regmap::Realization realization = choose_realization(e, words, options, others);
+    regmap::MappedMapOptions drawing;
+    drawing.find_self_intersections = false;
+    regmap::DrawnMap map = regmap::draw_realization(e.group, words, realization, drawing,
+                                                    page_limits(), js_progress(on_progress));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    nlohmann::ordered_json figures =
+        regmap::drawn_map_json(e.presentation.name, e.figures, map, seconds);
+    val result = val::object();
+    result.set("info", json_to_val(regmap::map_info_json(e.presentation, e.figures, e.seconds)));
+    result.set("drawn", json_to_val(figures));
+    val list = val::array();
+    for (const std::string& name : others) list.call<void>("push", name);
+    result.set("others", list);
+    const Mesh& mesh = map.drawn.mesh;
+    set_display_arrays(result, mesh);
+    result.set("face", to_typed_array(mesh.face_attributes.at(regmap::kFaceAttribute)));
+    result.set("tile", to_typed_array(mesh.face_attributes.at(regmap::kTileAttribute)));
+    std::vector<float> edges;
+    edges.reserve(6 * map.drawn.edge_segments.size());
+    for (const auto& [a, b] : map.drawn.edge_segments) {
+      for (Index v : {a, b})
+        for (int k = 0; k < 3; ++k) edges.push_back(static_cast<float>(mesh.positions[v][k]));
+    }
+    result.set("edges", to_typed_array(edges));
+    last_drawn().emplace(LastDrawn{e.presentation.name, std::move(map), std::move(figures)});
+    return result;
+  });
+}
+
+// The last drawing as GLB: faces coloured, _FACE and _TILE per face, edges as lines.
+val drawn_glb() {
+  return guard([&] {
+    if (!last_drawn()) throw InputError("no map has been drawn on a surface yet");
+    const LastDrawn& d = *last_drawn();
+    return to_typed_array(write_glb(regmap::drawn_map_scene(d.map, d.name, d.figures)));
+  });
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(tessera_regmap) {
@@ -169,6 +283,8 @@ EMSCRIPTEN_BINDINGS(tessera_regmap) {
   emscripten::function("regmapTiling", &map_tiling);
   emscripten::function("regmapSurface", &map_surface);
   emscripten::function("regmapSurfaceGlb", &surface_glb);
+  emscripten::function("regmapDrawn", &map_drawn);
+  emscripten::function("regmapDrawnGlb", &drawn_glb);
 }
 
 }  // namespace tessera::wasm

@@ -4,6 +4,7 @@ import './page.test.js';
 import './regmap.test.js';
 import './field.test.js';
 import './surface.test.js';
+import './drawn.test.js';
 import './large-mesh.test.js';
 import './layout.test.js';
 

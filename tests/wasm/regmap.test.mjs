@@ -79,3 +79,31 @@ test('native and wasm build the same regular surface: bouquet, spine, 2-Octahedr
       assert.deepEqual(wasm[key], native[key], `${name}.${key}`);
   }
 });
+
+// Thesis Sec. 9.5-9.6: the Klein quartic on the tetrahedron and R9.3' on the 2-Cube, drawn in the
+// module as natively (the same target, pairing and figures), and again from the shipped manifest's
+// pairing without a search.
+test('native and wasm draw a map on the same surface through the same pairing', () => {
+  const cli = path.resolve(here, '../../build/native/cli/tessera');
+  const manifest = JSON.parse(fs.readFileSync(path.resolve(here, '../../data/regmaps/realizations.json'), 'utf8'));
+  for (const name of ['R3.1', "R9.3'"]) {
+    const wasm = tessera.regmapDrawn(name, {}, undefined);
+    const native = JSON.parse(execFileSync(cli, ['regmap', 'map', name, '--json', '--no-self-intersections'], { encoding: 'utf8' }));
+    for (const key of ['target', 'genus', 'V', 'E', 'F', 'faces_are_disks', 'covers_once', 'closed', 'oriented', 'mesh_faces'])
+      assert.deepEqual(wasm.drawn[key], native[key], `${name}.${key}`);
+    for (const key of ['kind', 'x', 'y']) assert.equal(wasm.drawn.pairing[key], native.pairing[key], `${name}.pairing.${key}`);
+    assert.deepEqual([wasm.drawn.V, wasm.drawn.E, wasm.drawn.F], [native.expected.V, native.expected.E, native.expected.F]);
+    assert.equal(new Set(wasm.face).size, native.F);
+    assert.equal(wasm.face.length, wasm.triangleFace[wasm.triangleFace.length - 1] + 1);
+    assert.ok(wasm.edges.length > 0 && wasm.edges.length % 6 === 0);
+
+    const entry = manifest.maps.find((m) => m.source === name);
+    const fromManifest = tessera.regmapDrawn(name, { pairing: JSON.stringify(entry.pairing) }, undefined);
+    assert.equal(fromManifest.drawn.target, entry.target);
+    assert.equal(fromManifest.drawn.F, native.F);
+  }
+  const glb = tessera.regmapDrawnGlb();
+  assert.equal(new TextDecoder().decode(glb.subarray(0, 4)), 'glTF');
+  assert.throws(() => tessera.regmapDrawn('R3.1', { pairing: '{"target": "Tetrahedron"}' }, undefined), (e) => e.kind === 'input');
+  assert.throws(() => tessera.regmapDrawn('R3.1', { on: 'Cube' }, undefined), (e) => e.kind === 'input');
+});

@@ -21,6 +21,7 @@ describe('parseHash', () => {
       wireframe: true,
       map: 'R3.1',
       view: 'surface',
+      on: null,
       base: 'relax',
       radius: 0.2,
       smoothness: 8,
@@ -137,6 +138,21 @@ describe('formatHash', () => {
     const regmap = { ...DEFAULT_STATE, mode: 'regmap', map: 'R2.4' };
     expect(formatHash({ ...regmap, view: 'surface' })).toBe('#mode=regmap&map=R2.4&view=surface');
     expect(formatHash({ ...regmap, view: 'surface', radius: 0.2, smoothness: 4 })).toBe('#mode=regmap&map=R2.4&view=surface&radius=0.2');
+  });
+
+  it('keeps the drawn-map view and the surface it is drawn on, and drops malformed target names', () => {
+    const { state, problems } = parseHash("#mode=regmap&map=R3.1&view=map&on=Tetrahedron");
+    expect(problems).toEqual([]);
+    expect([state.view, state.on]).toEqual(['map', 'Tetrahedron']);
+    for (const on of ["R2.1'", '{2,4}', '{4,4}_(1,1)']) expect(parseHash(`#on=${encodeURIComponent(on)}`).state.on).toBe(on);
+    for (const on of ['<img>', 'tetrahedron', '{4,4}_(1,', 'R2', 'x'.repeat(40)]) {
+      const parsed = parseHash(`#on=${encodeURIComponent(on)}`);
+      expect(parsed.state.on).toBeNull();
+      expect(parsed.problems).toHaveLength(1);
+    }
+    const regmap = { ...DEFAULT_STATE, mode: 'regmap', map: 'R3.1' };
+    expect(formatHash({ ...regmap, view: 'map', on: 'Tetrahedron' })).toBe('#mode=regmap&map=R3.1&view=map&on=Tetrahedron');
+    expect(formatHash({ ...regmap, view: 'map' })).toBe('#mode=regmap&map=R3.1&view=map');
   });
 
   it('writes Field options only when they differ from the defaults', () => {

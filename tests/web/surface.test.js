@@ -148,3 +148,20 @@ describe('SURFACE_STAGES', () => {
     expect(SURFACE_STAGES.map(([stage]) => stage)).toEqual(['hyperbolic tiling', 'relaxation', 'tubification', 'self-intersections']);
   });
 });
+
+describe('drawnFigureValues', () => {
+  it("shows each count found on the drawing beside the map's own, and the pairing kind", async () => {
+    const { DRAWN_FIGURES, drawnFigureValues } = await import('../../web/src/ui/drawn-figures.js');
+    const drawn = {
+      target: 'Tetrahedron', target_kind: 'platonic', pairing: { kind: 'rotations' }, genus: 3,
+      V: 24, E: 84, F: 55, expected: { V: 24, E: 84, F: 56 }, faces_are_disks: true, covers_once: true,
+      closed: true, oriented: true, mesh_faces: 166680, seconds: 1.5,
+    };
+    const values = drawnFigureValues(drawn);
+    expect(values.V).toBe('24 = 24');
+    expect(values.F).toBe('55, not 56');
+    expect(values.target).toBe('Tetrahedron (platonic)');
+    expect(values.pairing).toBe('rotations');
+    for (const [key] of DRAWN_FIGURES) expect(values).toHaveProperty(key);
+  });
+});

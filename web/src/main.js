@@ -11,6 +11,7 @@ import { formatHash, parseHash } from './ui/hash.js';
 import { QuadLayoutMode } from './ui/quad-layout-mode.js';
 import { RegularMapMode } from './ui/regmap-mode.js';
 import { TilingView } from './ui/tiling-view.js';
+import { DrawnView } from './ui/drawn-view.js';
 import { SurfaceView } from './ui/surface-view.js';
 import { MODES } from './ui/modes.js';
 
@@ -55,6 +56,16 @@ const modes = {
     panel: byId('regmap-panel'),
     view: new TilingView(byId('tiling-view')),
     viewChoices: [...byId('regmap-views').querySelectorAll('input')],
+    drawn: viewer
+      ? new DrawnView({
+          root: byId('regmap-panel').querySelector('[data-role=drawn-view]'),
+          note: byId('surface-note'),
+          viewer,
+          status,
+          request,
+          onStateChange: updateState,
+        })
+      : null,
     surface: viewer
       ? new SurfaceView({
           root: byId('regmap-panel').querySelector('[data-role=surface-view]'),

@@ -13,6 +13,10 @@ const name = (text) => (/^[A-Za-z0-9][A-Za-z0-9_.'-]{0,63}$/.test(text) ? text :
 const flag = (text) => ({ 1: true, 0: false })[text];
 // A catalog name (Rg.n, a prime for the dual); whether the catalog holds it is the mode's question.
 const mapName = (text) => (/^R\d{1,4}\.\d{1,5}'?$/.test(text) ? text : undefined);
+// A target map's name: a catalog name, a Platonic solid, a hosohedron {2,n} or a torus map
+// {4,4}_(b,c); whether there is such a target is the core's question.
+const targetName = (text) =>
+  /^(R\d{1,4}\.\d{1,5}'?|[A-Z][a-z]{2,15}|\{\d{1,3},\d{1,3}\}(_\(\d{1,3},\d{1,3}\))?)$/.test(text) ? text : undefined;
 
 /** Each shareable key, with its parser (text -> value, or undefined when malformed). */
 const FIELDS = Object.freeze({
@@ -21,8 +25,10 @@ const FIELDS = Object.freeze({
   shading: oneOf(['flat', 'smooth']),
   wireframe: flag,
   map: mapName,
-  // The Regular maps mode's view (2D tiling or 3D surface, built on opening) and surface options.
-  view: oneOf(['tiling', 'surface']),
+  // The Regular maps mode's view (2D tiling, the map drawn on a surface, or its own regular surface:
+  // built on opening), the surface a map is drawn on (none: the best), the surface options.
+  view: oneOf(['tiling', 'map', 'surface']),
+  on: targetName,
   ...SURFACE_PARSERS,
   // The Field view: shown (computed on opening the link), its options, the texture on the surface.
   field: flag,
@@ -37,6 +43,7 @@ export const DEFAULT_STATE = Object.freeze({
   wireframe: false,
   map: null,
   view: 'tiling',
+  on: null,
   ...SURFACE_DEFAULTS,
   field: false,
   ...FIELD_DEFAULTS,

@@ -16,12 +16,13 @@ const MAX_DRAWN_TRIANGLES = 16_000;
  * its regular surface (the 3D view), and maps typed as presentations. Every name and presentation
  * is user text and is shown as text only.
  * panel: the mode's section of the page; view (TilingView); viewChoices: the radio buttons of the
- * views ('tiling', 'surface'); surface (SurfaceView, or null without a 3D view); client (WorkerClient), jobs (Jobs), status (Status); onStateChange(partial state)
- * when what a link should share changes.
+ * views ('tiling', 'map', 'surface'); drawn (DrawnView: the map on a target's surface) and surface
+ * (SurfaceView: its own regular surface), both null without a 3D view; client (WorkerClient), jobs
+ * (Jobs), status (Status); onStateChange(partial state) when what a link should share changes.
  */
 export class RegularMapMode {
-  constructor({ panel, view, viewChoices, surface, client, jobs, status, onStateChange }) {
-    Object.assign(this, { panel, view, viewChoices, surface, client, jobs, status, onStateChange });
+  constructor({ panel, view, viewChoices, drawn, surface, client, jobs, status, onStateChange }) {
+    Object.assign(this, { panel, view, viewChoices, drawn, surface, client, jobs, status, onStateChange });
     this.part = (role) => panel.querySelector(`[data-role=${role}]`);
     this.rows = null; // the catalog, once read
     this.shown = null; // { name, info }: the map on screen; name is null for a typed presentation
@@ -39,7 +40,7 @@ export class RegularMapMode {
       if (event.key === 'Enter' && (event.ctrlKey || event.metaKey)) this.runPresentation();
     });
     for (const choice of this.viewChoices) {
-      choice.disabled = choice.value === 'surface' && !surface;
+      choice.disabled = choice.value !== 'tiling' && !surface;
       choice.addEventListener('change', () => this.chooseView(choice.value));
     }
   }
@@ -61,6 +62,7 @@ export class RegularMapMode {
   async applyState(state) {
     if (!this.rows) return this.start(state);
     this.surface?.setOptions(state);
+    this.drawn?.setTarget(state.on);
     this.setView(state.view);
     const { map } = state;
     const known = map !== null && findMap(this.rows, map) !== undefined;
@@ -72,21 +74,27 @@ export class RegularMapMode {
         `It holds ${count(this.rows.length)} maps, ${this.rows[0].name} to ${this.rows.at(-1).name} (a prime names the dual).`,
       );
     }
-    await this.surface?.update();
+    await this.update3d();
   }
 
-  /** 'tiling' or 'surface' (the 2D tiling, unless there is a 3D view). */
+  /** 'tiling', 'map' or 'surface' (the 2D tiling, unless there is a 3D view). */
   setView(view) {
     const shown = this.surface ? view : 'tiling';
     for (const choice of this.viewChoices) choice.checked = choice.value === shown;
     this.view.setVisible(shown === 'tiling');
     this.surface?.setActive(shown === 'surface');
+    this.drawn?.setActive(shown === 'map');
   }
 
   async chooseView(view) {
     this.setView(view);
     this.onStateChange({ view });
+    await this.update3d();
+  }
+
+  async update3d() {
     await this.surface?.update();
+    await this.drawn?.update();
   }
 
   async showMap(name) {
@@ -121,7 +129,10 @@ export class RegularMapMode {
     if (name !== null) dual.textContent = `Show its dual, ${dualName(name)}`;
     this.list.setChosen(name);
     this.onStateChange({ map: name });
-    await this.surface?.setMap({ spec, name: name ?? (result.info.name || 'typed map') });
+    const map = { spec, name: name ?? (result.info.name || 'typed map') };
+    this.drawn?.setTarget(null);
+    await this.surface?.setMap(map);
+    await this.drawn?.setMap(map);
   }
 
   drawTiling({ svg, polygon }, name) {

@@ -47,6 +47,10 @@ export class SurfaceView {
   setActive(active) {
     this.active = active;
     this.root.hidden = !active;
+    if (active && this.shown) {
+      this.viewer.showColoredSurface(this.shown.surface);
+      this.viewer.showSurfaceLines(null);
+    }
     this.showNote();
   }
 
@@ -96,8 +100,9 @@ export class SurfaceView {
       this.stopped = key;
       return this.showNote();
     }
-    this.shown = { key, payload, name: map.name };
+    this.shown = { key, payload, name: map.name, surface: result.surface };
     this.viewer.showColoredSurface(result.surface);
+    this.viewer.showSurfaceLines(null);
     fillFigures(this.part('surface-figures'), SURFACE_FIGURES, surfaceFigureValues(result.stats));
     this.part('surface-result').hidden = false;
     this.part('surface-result').scrollIntoView({ block: 'nearest' });
@@ -115,7 +120,7 @@ export class SurfaceView {
 
   clear() {
     this.shown = null;
-    this.viewer.showColoredSurface(null);
+    if (this.active) this.viewer.showColoredSurface(null);
     this.part('surface-result').hidden = true;
     this.showNote();
   }

@@ -16,7 +16,7 @@ import {
   WebGLRenderer,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { surfaceGeometry } from './geometry.js';
+import { segmentLines, surfaceGeometry } from './geometry.js';
 import { uvTexture } from './textures.js';
 
 export const BACKGROUND = '#23272e';
@@ -79,6 +79,7 @@ export class Viewer {
     this.layers = new Map(); // name -> object
     this.coloredMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.6, metalness: 0, side: DoubleSide });
     this.coloredSurface = null;
+    this.surfaceLines = null;
 
     this.renderPending = false;
     new ResizeObserver(() => this.resize(container)).observe(container);
@@ -113,6 +114,17 @@ export class Viewer {
     this.coloredSurface = new Mesh(geometry, this.coloredMaterial);
     this.scenes.get('surface').root.add(this.coloredSurface);
     this.setBounds('surface', geometry.boundingSphere);
+  }
+
+  /** Shows line segments (Float32Array, 6 per segment) over the surface scene; null removes them. */
+  showSurfaceLines(segments, color = 0x000000) {
+    remove(this.surfaceLines, { withMaterial: true });
+    this.surfaceLines = null;
+    if (segments) {
+      this.surfaceLines = segmentLines(segments, color);
+      this.scenes.get('surface').root.add(this.surfaceLines);
+    }
+    this.requestRender();
   }
 
   /** Draws the scene `name` of SCENES, with the camera where it was left (or framing what it shows). */

@@ -52,6 +52,14 @@ export const COMMANDS = Object.freeze({
   regmapSurface: 'regmapSurface', // payload: { map, options } -> { info, stats, surface }
   // The surface of { map, options } as GLB; a worker whose core holds another surface builds it again.
   regmapSurfaceGlb: 'regmapSurfaceGlb', // payload: { map, options } -> { bytes }
+  // The map drawn on the regular surface of a target of its genus (thesis Sec. 9.5-9.6): the
+  // shipped manifest's realization (data/regmaps/realizations.json) when `on` is null or its
+  // target, else a search over `on` (or every target). drawn: the core's figures (target, V, E, F
+  // found, faces_are_disks, covers_once, closed, oriented, genus, pairing, seconds, ...); others:
+  // the other targets that work; surface: coloured by the map's faces; bare: the same mesh
+  // coloured by quarter tube; edges: the map's edges (Float32Array, 6 per segment).
+  regmapDrawn: 'regmapDrawn', // payload: { map, on } -> { info, drawn, others, surface, bare, edges }
+  regmapDrawnGlb: 'regmapDrawnGlb', // payload: { map, on } -> { bytes }
 });
 
 /** Error kinds that the page adds to the core's. */

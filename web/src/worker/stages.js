@@ -22,6 +22,17 @@ export const SOLVE_STAGES = Object.freeze([
   ['arcs', 'Tracing the arcs and cutting the mesh into patches'],
 ]);
 // The core's stages of a regular surface, in order.
+// A map drawn on a target's surface: the target's surface, then the drawing (mapped_map.cpp).
+export const DRAWN_STAGES = Object.freeze([
+  ['hyperbolic tiling', "Growing the target's hyperbolic tiling"],
+  ['relaxation', "Relaxing the target's edge graph in space"],
+  ['tubification', "Tubifying the target's edges"],
+  ['template', "Cutting the map's tiling into the quarter tube"],
+  ['quarter tubes', 'Placing the map in every quarter tube'],
+  ['faces', "Labelling the map's faces and edges"],
+  ['checks', 'Checking the drawing: faces, vertices, edges, genus'],
+]);
+
 export const SURFACE_STAGES = Object.freeze([
   ['hyperbolic tiling', 'Growing the hyperbolic tiling'],
   ['relaxation', 'Relaxing the edge graph in space'],

@@ -7,6 +7,7 @@ import { tiledSurface } from './surface-display.js';
 import { arcSegments, patchSurface } from './layout-display.js';
 import { MAX_PRESOLVE_SECONDS, presolveInTurn, presolveOrder } from './presolve.js';
 import {
+  DRAWN_STAGES,
   FIELD_STAGES,
   GRAPH_STAGES,
   PARAM_STAGES,
@@ -23,6 +24,8 @@ const CORE_URL = new URL(`${import.meta.env.BASE_URL}wasm/tessera.mjs`, self.loc
 let core = null; // Promise of the wasm module, created on first use, dropped after a trap
 const catalogs = new WeakMap(); // wasm module -> its catalog rows, read into it once
 const surfaces = new WeakMap(); // wasm module -> the key (surfaceKey) of the last surface it built
+const drawings = new WeakMap(); // wasm module -> the key (drawnKey) of the last map it drew
+let manifest = null; // Promise of the shipped realizations: map name -> { target, others, pairing }
 // The mesh the module's session holds (the core keeps the last mesh it built), with the arrays the
 // field view is drawn from: { module, id, positions, triangles, normals, fieldKey, paramKey,
 // graphKey, graph, layoutKey }, where id is the page's number of the mesh, and the keys name the
@@ -154,6 +157,28 @@ const handlers = {
     return { info, stats, surface: tiledSurface(result) };
   },
 
+  async [COMMANDS.regmapDrawn]({ map, on }, progress) {
+    const result = await drawMap(map, on, progress, 0.85);
+    progress('Preparing the view', 0.85);
+    const { info, drawn, others, positions, triangles, triangleFace, face, tile, edges } = result;
+    return {
+      info,
+      drawn,
+      others,
+      surface: tiledSurface({ positions, triangles, triangleFace, tile: face }),
+      bare: tiledSurface({ positions, triangles, triangleFace, tile }),
+      edges,
+    };
+  },
+
+  async [COMMANDS.regmapDrawnGlb]({ map, on }, progress) {
+    progress('Starting the geometry core', 0);
+    const module = await loadCore();
+    if (drawings.get(module) !== drawnKey(map, on)) await drawMap(map, on, progress, 0.8);
+    progress('Writing the GLB file', 0.8);
+    return { bytes: module.regmapDrawnGlb() };
+  },
+
   async [COMMANDS.regmapSurfaceGlb]({ map, options }, progress) {
     progress('Starting the geometry core', 0);
     const module = await loadCore();
@@ -177,6 +202,37 @@ async function buildSurface(map, options, progress, to) {
   const result = module.regmapSurface(String(map), { base, tubeRadius, smoothness }, stagedProgress(plan, progress));
   surfaces.set(module, surfaceKey(map, options));
   return result;
+}
+
+// Draws a map on a target's surface in the core (which keeps it for its GLB): the manifest's
+// pairing when it has one for this map and target, so that the page does not search.
+async function drawMap(map, on, progress, to) {
+  progress('Starting the geometry core', 0);
+  const module = await loadCore();
+  await catalogOf(module);
+  progress('Finding the surface to draw on', 0.05);
+  const entry = (await realizations()).get(String(map));
+  const known = entry && (on === null || on === undefined || on === entry.target);
+  const options = known ? { pairing: JSON.stringify(entry.pairing) } : { on: on ?? undefined };
+  drawings.delete(module);
+  // Shares of the bar as the stages' times for R3.1 on the tetrahedron.
+  const plan = planStages(DRAWN_STAGES, [0.1, 3, 1, 2, 0.5, 1, 3], 0.1, to);
+  const result = module.regmapDrawn(String(map), options, stagedProgress(plan, progress));
+  drawings.set(module, drawnKey(map, on));
+  if (known) result.others = entry.others;
+  return result;
+}
+
+const drawnKey = (map, on) => JSON.stringify([String(map), on ?? null]);
+
+// The shipped manifest of `tessera regmap realize`, bundled as text (a chunk of its own).
+function realizations() {
+  manifest ??= import('../../../data/regmaps/realizations.json?raw').then(({ default: text }) => {
+    const byName = new Map();
+    for (const m of JSON.parse(text).maps ?? []) byName.set(m.source, m);
+    return byName;
+  });
+  return manifest;
 }
 
 const surfaceKey = (map, { base, tubeRadius, smoothness }) => JSON.stringify([String(map), base, tubeRadius, smoothness]);

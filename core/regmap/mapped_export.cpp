@@ -1,0 +1,64 @@
+#include "regmap/mapped_export.h"
+
+#include "regmap/surface_export.h"
+
+namespace tessera::regmap {
+
+DrawnMap draw_realization(const FiniteGroup& source, const ElementWords& words,
+                          const Realization& realization, const MappedMapOptions& options,
+                          const Limits& limits, const Progress& progress) {
+  const Presentation& target = realization.target.presentation;
+  const FiniteGroup target_group = enumerate_group(target, limits);
+  SurfaceOptions surface_options;
+  surface_options.find_self_intersections = false;
+  DrawnMap out{realization,
+               build_regular_surface(target, target_group, surface_options, limits, progress),
+               {}};
+  out.drawn = map_onto_surface(source, words, realization.pairing, out.surface, options, progress);
+  return out;
+}
+
+nlohmann::ordered_json drawn_map_json(const std::string& source_name, const MapFigures& figures,
+                                      const DrawnMap& map, double seconds) {
+  const MappedMapStats& s = map.drawn.stats;
+  return {{"source", source_name},
+          {"target", map.realization.target.name},
+          {"target_kind", to_string(map.realization.target.kind)},
+          {"genus", s.genus},
+          {"V", s.vertices},
+          {"E", s.edges},
+          {"F", s.faces},
+          {"expected", {{"V", figures.vertices}, {"E", figures.edges}, {"F", figures.faces}}},
+          {"faces_are_disks", s.faces_are_disks},
+          {"covers_once", s.covers_once},
+          {"closed", s.closed},
+          {"oriented", s.oriented},
+          {"self_intersections", s.self_intersections_searched
+                                     ? nlohmann::ordered_json(s.self_intersections)
+                                     : nlohmann::ordered_json(nullptr)},
+          {"symmetries_verified", map.surface.stats.symmetries_verified},
+          {"surface_base", map.surface.stats.base},
+          {"subdivisions", s.subdivisions},
+          {"mesh_vertices", s.mesh_vertices},
+          {"mesh_faces", s.mesh_faces},
+          {"pairing", pairing_json(map.realization.pairing)},
+          {"seconds", seconds}};
+}
+
+Scene drawn_map_scene(const DrawnMap& map, const std::string& source_name,
+                      const nlohmann::ordered_json& figures) {
+  const MappedMap& drawn = map.drawn;
+  Scene scene;
+  scene.mesh = drawn.mesh;
+  for (std::int32_t face : drawn.mesh.face_attributes.at(kFaceAttribute))
+    scene.face_colors.push_back(quarter_tube_color(face));
+  LineSet edges;
+  edges.name = "edges";
+  for (const auto& [a, b] : drawn.edge_segments)
+    edges.polylines.push_back({drawn.mesh.positions[a], drawn.mesh.positions[b]});
+  scene.line_sets.push_back(std::move(edges));
+  scene.extras = {{"map", source_name}, {"mapped", figures}};
+  return scene;
+}
+
+}  // namespace tessera::regmap

@@ -1,0 +1,41 @@
+// A map drawn on its target's surface, from the realization to what leaves Tessera: the one flow
+// (and JSON, and GLB scene) that `tessera regmap map` and the page's worker share.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "base/limits.h"
+#include "base/progress.h"
+#include "export/scene.h"
+#include "regmap/mapped_map.h"
+#include "regmap/realization.h"
+#include "regmap/regular_surface.h"
+
+namespace tessera::regmap {
+
+struct DrawnMap {
+  Realization realization;
+  RegularSurface surface;  // the target's
+  MappedMap drawn;
+};
+
+// Builds the target's regular surface (its self-intersections not searched: the drawing's are)
+// and draws M on it through the realization's pairing.
+DrawnMap draw_realization(const FiniteGroup& source, const ElementWords& words,
+                          const Realization& realization, const MappedMapOptions& options,
+                          const Limits& limits, const Progress& progress = Progress());
+
+// source, target, target_kind, genus, V, E, F (found), expected {V, E, F}, faces_are_disks,
+// covers_once, closed, oriented, self_intersections (null when not searched),
+// symmetries_verified, surface_base, subdivisions, mesh_vertices, mesh_faces, pairing, seconds.
+nlohmann::ordered_json drawn_map_json(const std::string& source_name, const MapFigures& figures,
+                                      const DrawnMap& map, double seconds);
+
+// The drawing with faces coloured by M's face, per-face "face" and "tile" (_FACE, _TILE in GLB),
+// M's edges as the line set "edges", extras {"map": name, "mapped": drawn_map_json(...)}.
+Scene drawn_map_scene(const DrawnMap& map, const std::string& source_name,
+                      const nlohmann::ordered_json& figures);
+
+}  // namespace tessera::regmap

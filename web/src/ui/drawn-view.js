@@ -1,0 +1,143 @@
+import { COMMANDS } from '../worker/protocol.js';
+import { downloadBytes, downloadName } from './download.js';
+import { fillFigures } from './info-panel.js';
+import { DRAWN_FIGURES, drawnFigureValues } from './drawn-figures.js';
+
+// The colour of the map's edges over its faces: dark, thin.
+const EDGE_COLOR = 0x1d1d1f;
+
+/**
+ * The "On a surface" view of the Regular maps mode: the map on screen drawn on the regular surface
+ * of a target of its genus (the best one, or the one a link or the list of others names), faces in
+ * colours, edges as dark lines, with a toggle for the bare surface (coloured by quarter tube), the
+ * figures found on the drawing, the other targets and the GLB. While the view is open it shows the
+ * drawing of the map and target on screen, drawing it when there is none, unless that failed or
+ * was cancelled.
+ * root: the view's section of the panel; note: the element over the viewport shown while nothing
+ * is drawn; viewer; status; request(label, command, payload); onStateChange(partial state).
+ */
+export class DrawnView {
+  constructor({ root, note, viewer, status, request, onStateChange }) {
+    Object.assign(this, { root, note, viewer, status, request, onStateChange });
+    this.part = (role) => root.querySelector(`[data-role=${role}]`);
+    this.map = null; // { spec, name }
+    this.on = null; // the target a link or a choice names; null: the best
+    this.active = false;
+    this.shown = null; // { key, payload, name, result }
+    this.building = null;
+    this.stopped = null;
+    this.part('bare-surface').addEventListener('change', () => this.showDrawing());
+    this.part('export-drawn-glb').addEventListener('click', () => this.exportGlb());
+  }
+
+  setMap(map) {
+    this.map = map;
+    this.stopped = null;
+    this.clear();
+    return this.update();
+  }
+
+  /** The target a link names (null: the best). */
+  setTarget(on) {
+    this.on = on ?? null;
+  }
+
+  /** Opens (true) or closes the view; opening it again retries a drawing that failed. */
+  setActive(active) {
+    if (active && !this.active) this.stopped = null;
+    this.active = active;
+    this.root.hidden = !active;
+    if (active) this.showDrawing();
+    this.showNote();
+  }
+
+  async update() {
+    if (!this.active || !this.map) return;
+    const key = drawnKey(this.map, this.on);
+    if (![this.shown?.key, this.building, this.stopped].includes(key)) await this.draw();
+  }
+
+  async draw() {
+    const { map, on } = this;
+    if (!map) return;
+    const key = drawnKey(map, on);
+    const payload = { map: map.spec, on };
+    this.building = key;
+    const where = on ? ` on the surface of ${on}` : ' on a surface';
+    const result = await this.request(`Drawing ${map.name}${where}`, COMMANDS.regmapDrawn, payload);
+    if (this.building === key) this.building = null;
+    if (this.map !== map || this.on !== on) return;
+    if (!result) {
+      this.stopped = key;
+      return this.showNote();
+    }
+    this.shown = { key, payload, name: map.name, result };
+    this.showDrawing();
+    fillFigures(this.part('drawn-figures'), DRAWN_FIGURES, drawnFigureValues(result.drawn));
+    this.showOthers(result.drawn.target, result.others);
+    this.part('drawn-result').hidden = false;
+    this.showNote();
+    this.onStateChange({ on });
+  }
+
+  /** The drawing on screen in the viewer's surface scene, or the bare surface under it. */
+  showDrawing() {
+    if (!this.active || !this.shown) return;
+    const { result } = this.shown;
+    const bare = this.part('bare-surface').checked;
+    this.viewer.showColoredSurface(bare ? result.bare : result.surface);
+    this.viewer.showSurfaceLines(bare ? null : result.edges, EDGE_COLOR);
+  }
+
+  // A button per other target; choosing one draws the map there.
+  showOthers(target, others) {
+    const list = this.part('drawn-others');
+    const names = [...new Set([target, ...others])];
+    list.replaceChildren(
+      ...names.map((name) => {
+        const button = document.createElement('button');
+        button.type = 'button';
+        button.textContent = name;
+        button.setAttribute('aria-pressed', String(name === target));
+        button.addEventListener('click', () => this.chooseTarget(name));
+        return button;
+      }),
+    );
+    this.part('drawn-others-label').hidden = names.length < 2;
+    list.hidden = names.length < 2;
+  }
+
+  async chooseTarget(name) {
+    this.on = name;
+    await this.update();
+  }
+
+  async exportGlb() {
+    if (!this.shown) return;
+    const { payload, name } = this.shown;
+    const reply = await this.request('Writing the GLB file', COMMANDS.regmapDrawnGlb, payload);
+    if (reply) downloadBytes(reply.bytes, downloadName(`${name}-drawn.glb`, 'glb'), 'model/gltf-binary');
+  }
+
+  clear() {
+    this.shown = null;
+    if (this.active) {
+      this.viewer.showColoredSurface(null);
+      this.viewer.showSurfaceLines(null);
+    }
+    this.part('drawn-result').hidden = true;
+    this.showNote();
+  }
+
+  showNote() {
+    if (!this.active) return;
+    this.note.hidden = this.shown !== null || !this.map;
+    if (!this.map) return;
+    const stopped = this.stopped === drawnKey(this.map, this.on);
+    this.note.textContent = stopped
+      ? `${this.map.name} was not drawn on a surface. Open this view again to retry.`
+      : `${this.map.name} shows here once it is drawn on a surface.`;
+  }
+}
+
+const drawnKey = (map, on) => JSON.stringify([map.spec, on ?? null]);
