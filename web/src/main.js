@@ -50,32 +50,26 @@ const request = (label, command, payload) =>
   jobs.run(label, (onProgress) => client.request(command, payload, { onProgress }));
 
 // The modes by id; each starts the first time it is shown. The Quad layout mode and the Regular
-// maps mode's surface need the 3D view.
+// maps mode's 3D views need the 3D view.
+// A 3D view of the Regular maps mode (DrawnView, SurfaceView) on its section of the panel.
+const mapView = (View, role) =>
+  viewer
+    ? new View({
+        root: byId('regmap-panel').querySelector(`[data-role=${role}]`),
+        note: byId('surface-note'),
+        viewer,
+        status,
+        request,
+        onStateChange: updateState,
+      })
+    : null;
 const modes = {
   regmap: new RegularMapMode({
     panel: byId('regmap-panel'),
     view: new TilingView(byId('tiling-view')),
     viewChoices: [...byId('regmap-views').querySelectorAll('input')],
-    drawn: viewer
-      ? new DrawnView({
-          root: byId('regmap-panel').querySelector('[data-role=drawn-view]'),
-          note: byId('surface-note'),
-          viewer,
-          status,
-          request,
-          onStateChange: updateState,
-        })
-      : null,
-    surface: viewer
-      ? new SurfaceView({
-          root: byId('regmap-panel').querySelector('[data-role=surface-view]'),
-          note: byId('surface-note'),
-          viewer,
-          status,
-          request,
-          onStateChange: updateState,
-        })
-      : null,
+    drawn: mapView(DrawnView, 'drawn-view'),
+    surface: mapView(SurfaceView, 'surface-view'),
     client,
     jobs,
     status,
