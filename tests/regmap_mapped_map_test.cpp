@@ -212,6 +212,8 @@ TEST(RegmapMappedMap, DrawsTheSourceWithItsFiguresOnTheTarget) {
 
 TEST(RegmapMappedMap, DrawsThroughRotationPairings) {
   expect_drawn("R3.1", "Tetrahedron");
+  // One face, on both sides of every edge: a disk once cut open along the edges.
+  expect_drawn("R2.6", "{4,4}_(1,0)");
   expect_drawn("R9.3'", "R2.1'");
   expect_drawn("R5.8", "R2.4");
 }

@@ -726,9 +726,11 @@ Vector3d grid_point(const Mesh& surface, const QuarterTubeGrid& grid, const Vect
 }
 
 // Each face label's triangles form one open disk: connected, one boundary loop, Euler
-// characteristic 1, once every vertex the face touches more than once (a map vertex that a face's
-// boundary passes twice) is split into one vertex per fan of the face's triangles around it.
-bool faces_are_disks(const Mesh& mesh, std::size_t labels) {
+// characteristic 1, once the face is cut open along M's edges (`cuts`: a face may lie on both
+// sides of an edge; a map of one face lies on both sides of all of them) and every vertex is split
+// into one vertex per fan of the face's triangles around it that no cut separates.
+bool faces_are_disks(const Mesh& mesh, std::size_t labels,
+                     const std::set<std::pair<Index, Index>>& cuts) {
   const std::vector<std::int32_t>& face = mesh.face_attributes.at(kFaceAttribute);
   std::vector<std::vector<Index>> by_label(labels);
   for (std::size_t f = 0; f < mesh.face_count(); ++f)
@@ -750,6 +752,8 @@ bool faces_are_disks(const Mesh& mesh, std::size_t labels) {
       }
     }
     for (const auto& [edge, corners] : corners_on_edge) {
+      if (cuts.count({std::min(edge.first, edge.second), std::max(edge.first, edge.second)}) > 0)
+        continue;
       for (std::size_t j = 1; j < corners.size(); ++j) {
         const Index a = find_root(fan, corners[0]), b = find_root(fan, corners[j]);
         if (a != b) fan[std::max(a, b)] = std::min(a, b);
@@ -893,7 +897,7 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
                   polygon_area(base.geometry, {base.corners.begin(), base.corners.end()}));
   const auto& labels = mesh.face_attributes.at(kFaceAttribute);
   stats.faces = std::set<std::int32_t>(labels.begin(), labels.end()).size();
-  stats.faces_are_disks = faces_are_disks(mesh, faces.count);
+  stats.faces_are_disks = faces_are_disks(mesh, faces.count, segments);
   check_closed_and_oriented(mesh, stats);
   if (stats.closed && stats.oriented)
     stats.genus = surface_topology(mesh, build_connectivity(mesh)).genus;
