@@ -138,7 +138,7 @@ constexpr const char* kMapHelp =
     "                   pairing in extras), .ply (integer face properties 'face', 'tile'), .obj\n"
     "  --json           print {source, target, genus, V, E, F, faces_are_disks, covers_once,\n"
     "                   closed, oriented, self_intersections, symmetries_verified, seconds, ...}\n"
-    "  --subdivisions N subdivisions of the template's pieces before it is refined to the\n"
+    "  --subdivisions N subdivisions of the template's pieces before they are laid over the\n"
     "                   quarter tube's grid (default 2)\n"
     "  --max-steps N    work limit of the pairing search per target, triangles walked\n"
     "                   (default 2000000)\n"

@@ -41,6 +41,34 @@ TEST(SelfIntersection, NearlyCoplanarDistantTriangles) {
                                   {1.790, 0.049, -0.707}, {1.790, 0.049, 0.473}));
 }
 
+// Two pieces of one triangle of a subdivided surface, their sides on one of its edges at disjoint
+// stretches (from the drawing of R9.3' on R2.1'): rounding put the collinear sides a hair off one
+// line, which read as a crossing.
+TEST(SelfIntersection, DisjointSidesOnOneLine) {
+  EXPECT_FALSE(
+      triangles_intersect({-3.1477898740010453, 1.3857889943490682, -0.43035719124587868},
+                          {-3.1632263381659813, 1.3184406056872626, -0.268727554860764},
+                          {-3.1894745628790666, 1.3472916638671864, -0.26041937008264565},
+                          {-3.1320152192798854, 1.3216025796238371, -0.34826017304403956},
+                          {-3.1193988457188291, 1.2702670797328535, -0.28259999421972026},
+                          {-3.1516940416948422, 1.3057647405545207, -0.27237779982192145}));
+}
+
+// A sliver and a small triangle on the two sides of a nearly flat fold (planes 7e-7 rad apart;
+// from R5.8 on R2.4): apart, though their planes' common line is too ill conditioned to tell.
+TEST(SelfIntersection, NeighboursAcrossANearlyFlatFold) {
+  EXPECT_FALSE(
+      triangles_intersect({-0.90489373221604164, 0.58084335411569221, 1.6157724804901714},
+                          {-0.92198114655140206, 0.59603216899118239, 1.8114581744668434},
+                          {-0.92204888868771517, 0.59612490501464421, 1.8117293500881844},
+                          {-0.92200536063310623, 0.59605371733214707, 1.8117350899375124},
+                          {-0.92138992544267528, 0.59522281313684966, 1.8090914827704412},
+                          {-0.92162243704570523, 0.59542746736518859, 1.8117855843534845}));
+  // Nearly parallel triangles that do overlap are still found.
+  EXPECT_TRUE(triangles_intersect({0, 0, 0}, {1, 0, 0}, {0, 1, 1e-7}, {0.2, 0.2, 0},
+                                  {1.2, 0.2, 1e-7}, {0.2, 1.2, 0}));
+}
+
 TEST(SelfIntersection, ClosedSurfacesDoNotCrossThemselves) {
   EXPECT_EQ(find_self_intersections(icosphere(3)).triangle_pairs, 0u);
   EXPECT_EQ(find_self_intersections(torus(2.0, 0.5, 48, 24)).triangle_pairs, 0u);

@@ -10,7 +10,10 @@
 #include <set>
 #include <utility>
 
+#include <Eigen/Geometry>
+
 #include "base/error.h"
+#include "mesh/mesh.h"
 #include "regmap/catalog.h"
 #include "regmap/mapped_map.h"
 #include "regmap/pairing.h"
@@ -180,6 +183,17 @@ TEST(RegmapPairing, AWorkLimitStopsTheSearch) {
   EXPECT_LE(s.steps, 3u + 64u);
 }
 
+double area(const Mesh& mesh) {
+  double total = 0;
+  const Mesh triangles = triangulate(mesh);
+  for (std::size_t f = 0; f < triangles.face_count(); ++f) {
+    const auto v = triangles.face(f);
+    const auto& p = triangles.positions;
+    total += 0.5 * (p[v[1]] - p[v[0]]).cross(p[v[2]] - p[v[0]]).norm();
+  }
+  return total;
+}
+
 void expect_drawn(const std::string& source, const std::string& target) {
   SCOPED_TRACE(source + " on " + target);
   const Drawn d = search(source, target);
@@ -187,9 +201,7 @@ void expect_drawn(const std::string& source, const std::string& target) {
   const ElementWords words(d.source);
   const TargetMap t = find_target(catalog(), target);
   const RegularSurface surface = build_regular_surface(t.presentation, d.target);
-  MappedMapOptions options;
-  options.find_self_intersections = false;
-  const MappedMap m = map_onto_surface(d.source, words, d.search.pairings[0], surface, options);
+  const MappedMap m = map_onto_surface(d.source, words, d.search.pairings[0], surface);
   const MappedMapStats& s = m.stats;
   EXPECT_EQ(s.vertices, d.figures.vertices);
   EXPECT_EQ(s.edges, d.figures.edges);
@@ -201,6 +213,10 @@ void expect_drawn(const std::string& source, const std::string& target) {
   EXPECT_EQ(s.genus, d.figures.genus);
   EXPECT_EQ(m.mesh.face_attributes.at(kFaceAttribute).size(), m.mesh.face_count());
   EXPECT_FALSE(m.edge_segments.empty());
+  // The drawing subdivides the surface's triangles: the same area, and crossings only where the
+  // surface has them.
+  EXPECT_NEAR(area(m.mesh), area(surface.mesh), 1e-9 * area(surface.mesh));
+  EXPECT_EQ(s.self_intersections, surface.stats.self_intersections);
 }
 
 TEST(RegmapMappedMap, DrawsTheSourceWithItsFiguresOnTheTarget) {

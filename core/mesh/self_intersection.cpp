@@ -28,7 +28,11 @@ std::array<double, 3> plane_distances(const Triangle& plane, const Triangle& t) 
 // Signed distances below a billionth of the triangles' size count as on the plane: otherwise
 // rounding makes nearly coplanar neighbours on a smooth surface look as if they crossed.
 constexpr double kOnPlane = 1e-9;
-constexpr double kParallel = 1e-9;  // sine of the angle between two planes taken as parallel
+// Sine of the angle below which two planes count as parallel: their common line is too ill
+// conditioned to compare intervals on (a sliver beside its neighbour across a nearly flat fold
+// looked as if it crossed it). Projecting such a pair on one plane can only add crossings, never
+// miss one: triangles that meet have projections that meet.
+constexpr double kParallel = 1e-5;
 
 void snap_to_plane(std::array<double, 3>& d, double normal_length, const Triangle& s,
                    const Triangle& t) {
@@ -70,9 +74,15 @@ double orient(const Vector2d& a, const Vector2d& b, const Vector2d& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
 
+// A point closer to a line than a billionth of the segments' size counts as on it (as kOnPlane
+// for planes): otherwise rounding makes two disjoint segments on one line (the sides of two
+// triangles on one edge of a subdivided triangle) look as if they crossed.
 bool segments_meet(const Vector2d& a, const Vector2d& b, const Vector2d& c, const Vector2d& d) {
-  const double o1 = orient(a, b, c), o2 = orient(a, b, d);
-  const double o3 = orient(c, d, a), o4 = orient(c, d, b);
+  const double size = std::max(
+      {(b - a).squaredNorm(), (d - c).squaredNorm(), (c - a).squaredNorm(), (d - a).squaredNorm()});
+  auto snapped = [&](double o) { return std::abs(o) <= kOnPlane * size ? 0.0 : o; };
+  const double o1 = snapped(orient(a, b, c)), o2 = snapped(orient(a, b, d));
+  const double o3 = snapped(orient(c, d, a)), o4 = snapped(orient(c, d, b));
   if (o1 == 0 && o2 == 0) {  // collinear: overlap of the projections on the longer axis
     const int axis = std::abs(b.x() - a.x()) >= std::abs(b.y() - a.y()) ? 0 : 1;
     const auto [lo1, hi1] = std::minmax(a[axis], b[axis]);

@@ -9,11 +9,9 @@ DrawnMap draw_realization(const FiniteGroup& source, const ElementWords& words,
                           const Limits& limits, const Progress& progress) {
   const Presentation& target = realization.target.presentation;
   const FiniteGroup target_group = enumerate_group(target, limits);
-  SurfaceOptions surface_options;
-  surface_options.find_self_intersections = false;
-  DrawnMap out{realization,
-               build_regular_surface(target, target_group, surface_options, limits, progress),
-               {}};
+  // The same surface as 'tessera regmap surface' builds: searched for crossings, so that one that
+  // crosses itself is replaced by a longer relaxation or the spine.
+  DrawnMap out{realization, build_regular_surface(target, target_group, {}, limits, progress), {}};
   out.drawn = map_onto_surface(source, words, realization.pairing, out.surface, options, progress);
   return out;
 }

@@ -126,6 +126,32 @@ double polygon_area(Geometry g, const std::vector<Point>& p) {
   return (double(n) - 2) * std::numbers::pi - angles;
 }
 
+// Points closer than a billionth are one vertex: a hash of cells a thousand times larger.
+class Welder {
+ public:
+  // The index of an earlier point of `points` this close to x, or -1.
+  std::int32_t find(const Vector2d& x, const std::vector<Vector2d>& points) const {
+    const auto [i, j] = cell(x);
+    for (long long di = -1; di <= 1; ++di) {
+      for (long long dj = -1; dj <= 1; ++dj) {
+        const auto found = cells_.find({i + di, j + dj});
+        if (found == cells_.end()) continue;
+        for (std::int32_t v : found->second)
+          if ((points[static_cast<std::size_t>(v)] - x).norm() < kWeld) return v;
+      }
+    }
+    return -1;
+  }
+  void add(const Vector2d& x, std::int32_t v) { cells_[cell(x)].push_back(v); }
+
+ private:
+  static std::pair<long long, long long> cell(const Vector2d& x) {
+    return {std::llround(x.x() / kCell), std::llround(x.y() / kCell)};
+  }
+  static constexpr double kCell = 1e-6, kWeld = 1e-9;
+  std::map<std::pair<long long, long long>, std::vector<std::int32_t>> cells_;
+};
+
 class TemplateBuilder {
  public:
   // `quad` in the cover, `sign` +1 when it is counterclockwise, -1 when clockwise.
@@ -215,22 +241,13 @@ class TemplateBuilder {
 
   // The template vertex at Klein point x (welded with an earlier one at the same point).
   std::int32_t vertex(const Vector2d& x, VertexKind kind) {
-    const long long i = std::llround(x.x() / kCell), j = std::llround(x.y() / kCell);
-    for (long long di = -1; di <= 1; ++di) {
-      for (long long dj = -1; dj <= 1; ++dj) {
-        const auto found = welded_.find({i + di, j + dj});
-        if (found == welded_.end()) continue;
-        for (std::int32_t v : found->second) {
-          if ((klein_[static_cast<std::size_t>(v)] - x).norm() < kWeld) {
-            if (kind != VertexKind::Interior) result_.kind[static_cast<std::size_t>(v)] = kind;
-            return v;
-          }
-        }
-      }
+    if (const std::int32_t v = welded_.find(x, klein_); v >= 0) {
+      if (kind != VertexKind::Interior) result_.kind[static_cast<std::size_t>(v)] = kind;
+      return v;
     }
     const auto v = static_cast<std::int32_t>(klein_.size());
     klein_.push_back(x);
-    welded_[{i, j}].push_back(v);
+    welded_.add(x, v);
     result_.kind.push_back(kind);
     return v;
   }
@@ -371,7 +388,6 @@ class TemplateBuilder {
       if (!fixed[v]) result_.st[v] = st.row(unknown[v]).transpose();
   }
 
-  static constexpr double kCell = 1e-6, kWeld = 1e-9;
   Cover cover_;
   double sign_;
   Isometry recentre_;
@@ -379,264 +395,361 @@ class TemplateBuilder {
   std::array<Vector2d, 4> klein_corners_;
   std::vector<std::pair<Element, Polygon>> pieces_;
   std::vector<Vector2d> klein_;
-  std::map<std::pair<long long, long long>, std::vector<std::int32_t>> welded_;
+  Welder welded_;
   Template result_;
 };
 
-// Splits the template's edges at their (s, t) midpoints until none is longer than a cell of the
-// quarter tube's grid (columns x across over the unit square), so that its triangles follow the
-// surface as closely as the grid does. Triangles with a long edge also split their longest
-// interior edge (longest-edge bisection keeps their shape); a side's edges split only by their
-// own length, so both templates that share the side split it alike.
-void refine_to_grid(Template& shape, int columns, int across) {
-  using Edge = std::pair<std::int32_t, std::int32_t>;
-  auto key = [](std::int32_t u, std::int32_t v) { return Edge(std::min(u, v), std::max(u, v)); };
-  auto length = [&](std::int32_t u, std::int32_t v) {
-    const Vector2d d =
-        shape.st[static_cast<std::size_t>(u)] - shape.st[static_cast<std::size_t>(v)];
-    return std::hypot(d.x() * columns, d.y() * across);
-  };
-  // Longer than a cell, with room for rounding: an edge of exactly one cell stays.
-  constexpr double kLongest = 1.0 + 1e-6;
-  std::vector<std::uint8_t> on_sides(shape.st.size(), 0);
-  for (std::size_t i = 0; i < 4; ++i)
-    for (const auto& [p, v] : shape.side[i]) on_sides[static_cast<std::size_t>(v)] |= 1u << i;
-  auto on_side = [&](std::int32_t u, std::int32_t v) {
-    return on_sides[static_cast<std::size_t>(u)] & on_sides[static_cast<std::size_t>(v)];
-  };
-  // First the grid's own nodes on the sides (so that the sides follow the grid's boundary), then
-  // midpoints of long edges.
-  for (bool grid_nodes = true;;) {
-    std::map<Edge, std::pair<Vector2d, std::int32_t>> split;  // the new point, its vertex
-    for (const auto& tri : shape.triangles) {
-      int longest = -1;
-      bool any = false;
-      for (int c = 0; c < 3; ++c) {
-        const std::int32_t u = tri[c], v = tri[(c + 1) % 3];
-        const Vector2d& a = shape.st[static_cast<std::size_t>(u)];
-        const Vector2d& b = shape.st[static_cast<std::size_t>(v)];
-        if (grid_nodes) {
-          const std::uint8_t sides = on_side(u, v);
-          if (sides == 0) continue;
-          const int axis = (sides & 0b0101) != 0 ? 0 : 1;  // L1, L3 run along s; L2, L4 along t
-          const int cells = axis == 0 ? columns : across;
-          const double lo = std::min(a[axis], b[axis]) * cells,
-                       hi = std::max(a[axis], b[axis]) * cells;
-          const double node = std::floor(lo + 1e-6) + 1;
-          if (node < hi - 1e-6) {
-            Vector2d at = a;
-            at[axis] = node / cells;
-            split[key(u, v)] = {at, -1};
-          }
-          continue;
-        }
-        if (length(u, v) > kLongest) {
-          any = true;
-          split[key(u, v)] = {0.5 * (a + b), -1};
-        }
-        if (on_side(u, v) == 0 &&
-            (longest < 0 || length(u, v) > length(tri[longest], tri[(longest + 1) % 3])))
-          longest = c;
-      }
-      if (any && longest >= 0) {
-        const std::int32_t u = tri[longest], v = tri[(longest + 1) % 3];
-        split[key(u, v)] = {
-            0.5 * (shape.st[static_cast<std::size_t>(u)] + shape.st[static_cast<std::size_t>(v)]),
-            -1};
-      }
-    }
-    if (split.empty()) {
-      if (!grid_nodes) return;
-      grid_nodes = false;
-      continue;
-    }
-    for (auto& [edge, point] : split) {
-      const auto u = static_cast<std::size_t>(edge.first),
-                 v = static_cast<std::size_t>(edge.second);
-      const Vector2d st = point.first;
-      point.second = static_cast<std::int32_t>(shape.st.size());
-      shape.st.push_back(st);
-      shape.kind.push_back(VertexKind::Interior);
-      const std::uint8_t sides = on_sides[u] & on_sides[v];
-      on_sides.push_back(sides);
-      for (std::size_t i = 0; i < 4; ++i)
-        if (sides & (1u << i))
-          shape.side[i].push_back({i % 2 == 0 ? st.x() : st.y(), point.second});
-    }
-    auto middle = [&](std::int32_t u, std::int32_t v) {
-      const auto found = split.find(key(u, v));
-      return found == split.end() ? -1 : found->second.second;
-    };
-    std::vector<std::array<std::int32_t, 3>> triangles;
-    std::vector<Element> flags;
-    auto add = [&](std::int32_t a, std::int32_t b, std::int32_t c, Element flag) {
-      triangles.push_back({a, b, c});
-      flags.push_back(flag);
-    };
-    for (std::size_t k = 0; k < shape.triangles.size(); ++k) {
-      const auto& t = shape.triangles[k];
-      const Element f = shape.triangle_flag[k];
-      const std::array<std::int32_t, 3> m = {middle(t[0], t[1]), middle(t[1], t[2]),
-                                             middle(t[2], t[0])};
-      const int count = (m[0] >= 0) + (m[1] >= 0) + (m[2] >= 0);
-      if (count == 0) {
-        add(t[0], t[1], t[2], f);
-      } else if (count == 3) {
-        add(t[0], m[0], m[2], f);
-        add(m[0], t[1], m[1], f);
-        add(m[2], m[1], t[2], f);
-        add(m[0], m[1], m[2], f);
-      } else if (count == 1) {
-        const int c = m[0] >= 0 ? 0 : m[1] >= 0 ? 1 : 2;
-        const std::int32_t a = t[c], b = t[(c + 1) % 3], o = t[(c + 2) % 3];
-        add(a, m[c], o, f);
-        add(m[c], b, o, f);
-      } else {
-        // The unsplit edge a -> o; the split ones o -> b and b -> a.
-        const int u = m[0] < 0 ? 0 : m[1] < 0 ? 1 : 2;
-        const std::int32_t a = t[u], o = t[(u + 1) % 3], b = t[(u + 2) % 3];
-        const std::int32_t ob = m[(u + 1) % 3], ba = m[(u + 2) % 3];
-        add(ob, b, ba, f);
-        if (length(a, ob) < length(o, ba)) {
-          add(a, o, ob, f);
-          add(a, ob, ba, f);
-        } else {
-          add(a, o, ba, f);
-          add(o, ob, ba, f);
-        }
-      }
-    }
-    shape.triangles = std::move(triangles);
-    shape.triangle_flag = std::move(flags);
-    std::vector<std::array<std::int32_t, 2>> edges;
-    for (const auto& [u, v] : shape.map_edges) {
-      const std::int32_t mid = middle(u, v);
-      if (mid < 0) {
-        edges.push_back({u, v});
-      } else {
-        edges.push_back({u, mid});
-        edges.push_back({mid, v});
-      }
-    }
-    shape.map_edges = std::move(edges);
-  }
-}
+// Where a vertex of the drawing lies on the quarter tube's grid: in cell (i, j), in its triangle
+// below the diagonal (i, j) - (i + 1, j + 1) or above it (the surface's quads are fanned from
+// (i, j), mesh/triangulate), at barycentric coordinates over that triangle's corners.
+struct GridLocation {
+  int i = 0, j = 0;
+  bool upper = false;
+  Vector3d weights = Vector3d::Zero();
+};
 
-// Lawson's flips in the grid's metric ((s, t) scaled by columns, across): every edge that is not
-// on a side, not on one of M's edges and not between two of M's faces is flipped while the two
-// angles facing it sum to more than pi (and its quadrilateral is convex), which removes the
-// slivers the cut pieces leave (their 3D chords cross the surface's other sheets).
-void flip_to_delaunay(Template& shape, int columns, int across,
-                      const std::vector<std::int32_t>& face_of_flag) {
-  using Edge = std::pair<std::int32_t, std::int32_t>;
-  auto key = [](std::int32_t u, std::int32_t v) { return Edge(std::min(u, v), std::max(u, v)); };
-  auto point = [&](std::int32_t v) {
-    const Vector2d& st = shape.st[static_cast<std::size_t>(v)];
-    return Vector2d(st.x() * columns, st.y() * across);
-  };
-  std::set<Edge> fixed;
-  for (const auto& [u, v] : shape.map_edges) fixed.insert(key(u, v));
-  std::vector<std::uint8_t> on_sides(shape.st.size(), 0);
-  for (std::size_t i = 0; i < 4; ++i)
-    for (const auto& [p, v] : shape.side[i]) on_sides[static_cast<std::size_t>(v)] |= 1u << i;
-  auto face = [&](std::size_t t) {
-    return face_of_flag[static_cast<std::size_t>(shape.triangle_flag[t])];
-  };
-  // The angle at corner c of triangle t.
-  auto angle = [&](std::size_t t, int c) {
-    const auto& tri = shape.triangles[t];
-    const Vector2d u = point(tri[(c + 1) % 3]) - point(tri[c]);
-    const Vector2d w = point(tri[(c + 2) % 3]) - point(tri[c]);
-    return std::atan2(std::abs(cross(u, w)), u.dot(w));
-  };
-  for (int pass = 0; pass < 100; ++pass) {
-    std::map<Edge, std::vector<std::pair<std::size_t, int>>> sides_of;  // (triangle, corner)
-    for (std::size_t t = 0; t < shape.triangles.size(); ++t)
-      for (int c = 0; c < 3; ++c)
-        sides_of[key(shape.triangles[t][c], shape.triangles[t][(c + 1) % 3])].push_back({t, c});
-    std::vector<bool> touched(shape.triangles.size(), false);
-    int flips = 0;
-    for (const auto& [edge, users] : sides_of) {
-      if (users.size() != 2 || fixed.count(edge) > 0) continue;
-      if ((on_sides[static_cast<std::size_t>(edge.first)] &
-           on_sides[static_cast<std::size_t>(edge.second)]) != 0)
-        continue;
-      const auto [t0, c0] = users[0];
-      const auto [t1, c1] = users[1];
-      if (touched[t0] || touched[t1] || face(t0) != face(t1)) continue;
-      // Triangle t0 = (a, b, o0) with the edge a -> b at corner c0; t1 has it as b -> a.
-      const std::int32_t a = shape.triangles[t0][c0], b = shape.triangles[t0][(c0 + 1) % 3];
-      const std::int32_t o0 = shape.triangles[t0][(c0 + 2) % 3];
-      const std::int32_t o1 = shape.triangles[t1][(c1 + 2) % 3];
-      if (angle(t0, (c0 + 2) % 3) + angle(t1, (c1 + 2) % 3) <= std::numbers::pi + 1e-12) continue;
-      // The new triangles (a, o1, o0) and (b, o0, o1) must both turn the old way.
-      const double turn = cross(point(b) - point(a), point(o0) - point(a));
-      const double n0 = cross(point(o1) - point(a), point(o0) - point(a));
-      const double n1 = cross(point(o0) - point(b), point(o1) - point(b));
-      if (n0 * turn <= 0 || n1 * turn <= 0) continue;
-      const Element f0 = shape.triangle_flag[t0];
-      shape.triangles[t0] = {a, o1, o0};
-      shape.triangles[t1] = {b, o0, o1};
-      shape.triangle_flag[t1] = f0;
-      touched[t0] = touched[t1] = true;
-      ++flips;
-    }
-    if (flips == 0) return;
-  }
-}
+// A template laid over the grid: its triangles cut by the grid's triangles, so that every
+// triangle of the drawing lies in one triangle of the surface (the drawing is a subdivision of
+// the surface mesh and has its self-intersections, no others) and in one of M's flags.
+struct Overlay {
+  Template shape;
+  std::vector<GridLocation> location;  // per vertex
+};
 
-// Moves every free vertex (inside one of M's faces, off the sides and off M's edges) to the mean
-// of its neighbours, a few times, in the grid's metric: the slivers the cut pieces leave become
-// better shaped triangles. A move that would turn a triangle over is not made.
-void smooth(Template& shape, const std::vector<std::int32_t>& face_of_flag) {
-  const std::size_t nv = shape.st.size();
-  std::vector<bool> free(nv, true);
-  for (const auto& side : shape.side)
-    for (const auto& [p, v] : side) free[static_cast<std::size_t>(v)] = false;
-  for (const auto& [u, v] : shape.map_edges)
-    free[static_cast<std::size_t>(u)] = free[static_cast<std::size_t>(v)] = false;
-  std::vector<std::int32_t> face(nv, -1);
-  std::vector<std::vector<std::size_t>> around(nv);
-  for (std::size_t t = 0; t < shape.triangles.size(); ++t) {
-    const std::int32_t f = face_of_flag[static_cast<std::size_t>(shape.triangle_flag[t])];
-    for (std::int32_t v : shape.triangles[t]) {
-      const auto i = static_cast<std::size_t>(v);
-      if (face[i] >= 0 && face[i] != f) free[i] = false;
-      face[i] = f;
-      around[i].push_back(t);
+// Removes the vertices the overlay does not need (they come from the template's own triangles,
+// which only carry M's flags): a vertex inside a grid triangle and off M's edges, or on one grid
+// line and off M's edges, or on one of M's edges inside a grid triangle, is merged into a
+// neighbour (along the line or edge it lies on) while no triangle turns over or degenerates and
+// the triangulation stays a disk (the two vertices' common neighbours are the edge's two
+// opposite corners). What stays: the grid's nodes, M's vertices and edge midpoints, M's
+// edges' crossings with the grid lines, the sides' vertices. Every triangle still lies in one
+// grid triangle and one of M's faces.
+class OverlaySimplifier {
+ public:
+  OverlaySimplifier(Overlay& overlay, int columns, int across)
+      : o_(overlay), shape_(overlay.shape), scale_(columns, across) {
+    const std::size_t nv = shape_.st.size();
+    around_.resize(nv);
+    for (std::size_t t = 0; t < shape_.triangles.size(); ++t)
+      for (std::int32_t v : shape_.triangles[t]) around_[static_cast<std::size_t>(v)].push_back(t);
+    alive_.assign(shape_.triangles.size(), true);
+    along_map_edge_.resize(nv);
+    for (const auto& [u, v] : shape_.map_edges) {
+      along_map_edge_[static_cast<std::size_t>(u)].insert(v);
+      along_map_edge_[static_cast<std::size_t>(v)].insert(u);
     }
-  }
-  for (std::size_t v = 0; v < nv; ++v)
-    if (shape.kind[v] != VertexKind::Interior) free[v] = false;
-  auto turns_left = [&](std::size_t t) {
-    const auto& tri = shape.triangles[t];
-    const Vector2d& a = shape.st[static_cast<std::size_t>(tri[0])];
-    return cross(shape.st[static_cast<std::size_t>(tri[1])] - a,
-                 shape.st[static_cast<std::size_t>(tri[2])] - a) > 0;
-  };
-  for (int pass = 0; pass < 4; ++pass) {
+    locked_.assign(nv, false);
+    for (const auto& side : shape_.side)
+      for (const auto& [p, v] : side) locked_[static_cast<std::size_t>(v)] = true;
     for (std::size_t v = 0; v < nv; ++v) {
-      if (!free[v] || around[v].empty()) continue;
-      Vector2d sum = Vector2d::Zero();
-      double count = 0;
-      for (std::size_t t : around[v]) {
-        for (std::int32_t w : shape.triangles[t]) {
-          if (static_cast<std::size_t>(w) == v) continue;
-          sum += shape.st[static_cast<std::size_t>(w)];
-          count += 1;
+      const int lines = grid_lines(v);
+      const bool on_edge = !along_map_edge_[v].empty();
+      if (shape_.kind[v] != VertexKind::Interior || lines >= 2 || (lines == 1 && on_edge) ||
+          (on_edge && along_map_edge_[v].size() != 2))
+        locked_[v] = true;
+    }
+  }
+
+  void run() {
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t v = 0; v < shape_.st.size(); ++v)
+        if (!locked_[v] && !around_[v].empty()) changed |= collapse(v);
+    }
+    compact();
+  }
+
+ private:
+  // How many grid lines (cell sides or diagonals) vertex v lies on: its zero weights.
+  int grid_lines(std::size_t v) const {
+    int zeros = 0;
+    for (int c = 0; c < 3; ++c) zeros += std::abs(o_.location[v].weights[c]) < kOnLine;
+    return zeros;
+  }
+
+  // Whether u lies on the grid line through v (v on exactly one).
+  bool on_same_line(std::size_t v, std::size_t u) const {
+    const Vector2d &a = shape_.st[v], &b = shape_.st[u];
+    const GridLocation& at = o_.location[v];
+    const int zero = std::abs(at.weights[0]) < kOnLine   ? 0
+                     : std::abs(at.weights[1]) < kOnLine ? 1
+                                                         : 2;
+    // The line opposite corner `zero` of the grid triangle: its two other corners.
+    const Vector2d cell(double(at.i), double(at.j));
+    const std::array<Vector2d, 3> corners =
+        at.upper ? std::array<Vector2d, 3>{cell, cell + Vector2d(1, 1), cell + Vector2d(0, 1)}
+                 : std::array<Vector2d, 3>{cell, cell + Vector2d(1, 0), cell + Vector2d(1, 1)};
+    const Vector2d p = corners[(zero + 1) % 3], q = corners[(zero + 2) % 3];
+    return std::abs(cross((q - p).normalized(), (b - a).cwiseProduct(scale_))) < kOnLine;
+  }
+
+  bool collapse(std::size_t v) {
+    std::vector<std::size_t> candidates;
+    if (!along_map_edge_[v].empty()) {
+      for (std::int32_t u : along_map_edge_[v]) candidates.push_back(static_cast<std::size_t>(u));
+    } else {
+      const bool on_line = grid_lines(v) == 1;
+      for (std::size_t u : neighbours(v))
+        if (!on_line || on_same_line(v, u)) candidates.push_back(u);
+    }
+    std::sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
+      return (shape_.st[a] - shape_.st[v]).squaredNorm() <
+             (shape_.st[b] - shape_.st[v]).squaredNorm();
+    });
+    for (std::size_t u : candidates)
+      if (try_collapse(v, u)) return true;
+    return false;
+  }
+
+  std::set<std::size_t> neighbours(std::size_t v) const {
+    std::set<std::size_t> out;
+    for (std::size_t t : around_[v])
+      for (std::int32_t w : shape_.triangles[t])
+        if (static_cast<std::size_t>(w) != v) out.insert(static_cast<std::size_t>(w));
+    return out;
+  }
+
+  bool try_collapse(std::size_t v, std::size_t u) {
+    std::vector<std::size_t> shared, moved;
+    for (std::size_t t : around_[v]) {
+      const auto& tri = shape_.triangles[t];
+      (std::find(tri.begin(), tri.end(), static_cast<std::int32_t>(u)) != tri.end() ? shared
+                                                                                    : moved)
+          .push_back(t);
+    }
+    if (shared.size() != 2) return false;
+    std::set<std::size_t> opposite;
+    for (std::size_t t : shared)
+      for (std::int32_t w : shape_.triangles[t])
+        if (static_cast<std::size_t>(w) != u && static_cast<std::size_t>(w) != v)
+          opposite.insert(static_cast<std::size_t>(w));
+    const std::set<std::size_t> nv = neighbours(v), nu = neighbours(u);
+    for (std::size_t w : nv)
+      if (w != u && nu.count(w) > 0 && opposite.count(w) == 0) return false;
+    for (std::size_t t : moved) {
+      std::array<Vector2d, 3> p;
+      for (int c = 0; c < 3; ++c) {
+        const auto w = static_cast<std::size_t>(shape_.triangles[t][c]);
+        p[c] = shape_.st[w == v ? u : w];
+      }
+      if (cross(p[1] - p[0], p[2] - p[0]) <= kMinArea) return false;
+    }
+    for (std::size_t t : shared) {
+      alive_[t] = false;
+      for (std::int32_t w : shape_.triangles[t]) {
+        auto& list = around_[static_cast<std::size_t>(w)];
+        list.erase(std::find(list.begin(), list.end(), t));
+      }
+    }
+    for (std::size_t t : moved) {
+      for (std::int32_t& w : shape_.triangles[t])
+        if (static_cast<std::size_t>(w) == v) w = static_cast<std::int32_t>(u);
+      around_[u].push_back(t);
+    }
+    around_[v].clear();
+    if (!along_map_edge_[v].empty()) {
+      for (std::int32_t w : along_map_edge_[v]) {
+        auto& list = along_map_edge_[static_cast<std::size_t>(w)];
+        list.erase(static_cast<std::int32_t>(v));
+        if (static_cast<std::size_t>(w) != u) {
+          list.insert(static_cast<std::int32_t>(u));
+          along_map_edge_[u].insert(w);
         }
       }
-      const Vector2d old = shape.st[v];
-      shape.st[v] = sum / count;
-      for (std::size_t t : around[v]) {
-        if (!turns_left(t)) {
-          shape.st[v] = old;
-          break;
+      along_map_edge_[u].erase(static_cast<std::int32_t>(v));
+      along_map_edge_[v].clear();
+    }
+    return true;
+  }
+
+  // Drops the removed triangles and vertices, renumbering the rest.
+  void compact() {
+    const std::size_t nv = shape_.st.size();
+    std::vector<std::int32_t> index(nv, -1);
+    Overlay out;
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (around_[v].empty()) continue;
+      index[v] = static_cast<std::int32_t>(out.shape.st.size());
+      out.shape.st.push_back(shape_.st[v]);
+      out.shape.kind.push_back(shape_.kind[v]);
+      out.location.push_back(o_.location[v]);
+    }
+    for (std::size_t t = 0; t < shape_.triangles.size(); ++t) {
+      if (!alive_[t]) continue;
+      const auto& tri = shape_.triangles[t];
+      out.shape.triangles.push_back({index[static_cast<std::size_t>(tri[0])],
+                                     index[static_cast<std::size_t>(tri[1])],
+                                     index[static_cast<std::size_t>(tri[2])]});
+      out.shape.triangle_flag.push_back(shape_.triangle_flag[t]);
+    }
+    for (std::size_t v = 0; v < nv; ++v)
+      for (std::int32_t w : along_map_edge_[v])
+        if (static_cast<std::size_t>(w) > v)
+          out.shape.map_edges.push_back({index[v], index[static_cast<std::size_t>(w)]});
+    for (std::size_t i = 0; i < 4; ++i)
+      for (const auto& [p, v] : shape_.side[i])
+        out.shape.side[i].push_back({p, index[static_cast<std::size_t>(v)]});
+    out.shape.pieces = shape_.pieces;
+    o_ = std::move(out);
+  }
+
+  static constexpr double kOnLine = 1e-9, kMinArea = 1e-14;
+  Overlay& o_;
+  Template& shape_;
+  Vector2d scale_;  // (s, t) to grid units
+  std::vector<std::vector<std::size_t>> around_;
+  std::vector<bool> alive_, locked_;
+  std::vector<std::set<std::int32_t>> along_map_edge_;
+};
+
+class OverlayBuilder {
+ public:
+  OverlayBuilder(const Template& shape, int columns, int across)
+      : in_(shape), columns_(columns), across_(across) {}
+
+  Overlay build() {
+    std::set<std::pair<std::int32_t, std::int32_t>> map_edges;
+    for (const auto& [u, v] : in_.map_edges) map_edges.insert({std::min(u, v), std::max(u, v)});
+    for (std::size_t k = 0; k < in_.triangles.size(); ++k) {
+      const auto& tri = in_.triangles[k];
+      std::array<bool, 3> on_map_edge{};
+      for (int c = 0; c < 3; ++c)
+        on_map_edge[c] = map_edges.count({std::min(tri[c], tri[(c + 1) % 3]),
+                                          std::max(tri[c], tri[(c + 1) % 3])}) > 0;
+      cut(k, on_map_edge);
+    }
+    assign_sides();
+    out_.shape.pieces = in_.pieces;
+    OverlaySimplifier(out_, columns_, across_).run();
+    return std::move(out_);
+  }
+
+ private:
+  // Template triangle k clipped to every grid triangle its bounding box meets.
+  void cut(std::size_t k, const std::array<bool, 3>& on_map_edge) {
+    const auto& tri = in_.triangles[k];
+    Polygon whole;
+    Vector2d lo = Vector2d::Constant(1e9), hi = -lo;
+    for (int c = 0; c < 3; ++c) {
+      const auto v = static_cast<std::size_t>(tri[c]);
+      whole.add(in_.st[v], in_.kind[v], c);
+      lo = lo.cwiseMin(in_.st[v]);
+      hi = hi.cwiseMax(in_.st[v]);
+    }
+    auto cells = [](double a, double b, int n) {
+      return std::pair<int, int>(std::clamp(static_cast<int>(std::floor(a * n)), 0, n - 1),
+                                 std::clamp(static_cast<int>(std::floor(b * n)), 0, n - 1));
+    };
+    const auto [i0, i1] = cells(lo.x(), hi.x(), columns_);
+    const auto [j0, j1] = cells(lo.y(), hi.y(), across_);
+    for (int i = i0; i <= i1; ++i) {
+      for (int j = j0; j <= j1; ++j) {
+        for (bool upper : {false, true}) {
+          const std::array<Vector2d, 3> g = grid_triangle(i, j, upper);
+          Polygon piece = whole;
+          for (int c = 0; c < 3 && piece.k.size() >= 3; ++c)
+            piece = clip(piece, g[c], g[(c + 1) % 3], 1.0);
+          if (piece.k.size() >= 3) add_piece(piece, {i, j, upper}, k, on_map_edge);
         }
       }
     }
   }
-}
+
+  std::array<Vector2d, 3> grid_triangle(int i, int j, bool upper) const {
+    auto node = [&](int a, int b) { return Vector2d(double(a) / columns_, double(b) / across_); };
+    if (upper) return {node(i, j), node(i + 1, j + 1), node(i, j + 1)};
+    return {node(i, j), node(i + 1, j), node(i + 1, j + 1)};
+  }
+
+  // A convex piece of template triangle k inside one grid triangle: its vertices welded with the
+  // drawing's, then fanned (a fan from a corner none of whose triangles is flat, or else from the
+  // piece's centre).
+  void add_piece(const Polygon& piece, GridLocation where, std::size_t k,
+                 const std::array<bool, 3>& on_map_edge) {
+    const std::array<Vector2d, 3> g = grid_triangle(where.i, where.j, where.upper);
+    std::vector<std::int32_t> v;
+    std::vector<int> edge;  // the template triangle's side under piece edge i -> i + 1, or -1
+    for (std::size_t i = 0; i < piece.k.size(); ++i) {
+      const std::int32_t w = vertex(piece.k[i], piece.kind[i], where, g);
+      if (!v.empty() && v.back() == w) continue;
+      v.push_back(w);
+      edge.push_back(piece.tri_side[i]);
+    }
+    while (v.size() > 1 && v.back() == v.front()) {
+      v.pop_back();
+      edge.pop_back();
+    }
+    if (v.size() < 3) return;
+    const Element flag = in_.triangle_flag[k];
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (edge[i] >= 0 && on_map_edge[static_cast<std::size_t>(edge[i])])
+        out_.shape.map_edges.push_back({v[i], v[(i + 1) % v.size()]});
+    }
+    auto area = [&](std::int32_t a, std::int32_t b, std::int32_t c) {
+      const auto& st = out_.shape.st;
+      return cross(st[static_cast<std::size_t>(b)] - st[static_cast<std::size_t>(a)],
+                   st[static_cast<std::size_t>(c)] - st[static_cast<std::size_t>(a)]);
+    };
+    const std::size_t n = v.size();
+    for (std::size_t apex = 0; apex < n; ++apex) {
+      bool flat = false;
+      for (std::size_t i = 1; i + 1 < n && !flat; ++i)
+        flat = area(v[apex], v[(apex + i) % n], v[(apex + i + 1) % n]) <= kFlat;
+      if (flat) continue;
+      for (std::size_t i = 1; i + 1 < n; ++i)
+        add_triangle({v[apex], v[(apex + i) % n], v[(apex + i + 1) % n]}, flag);
+      return;
+    }
+    Vector2d centre = Vector2d::Zero();
+    for (std::int32_t w : v) centre += out_.shape.st[static_cast<std::size_t>(w)] / double(n);
+    const std::int32_t c = vertex(centre, VertexKind::Interior, where, g);
+    for (std::size_t i = 0; i < n; ++i) add_triangle({c, v[i], v[(i + 1) % n]}, flag);
+  }
+
+  void add_triangle(const std::array<std::int32_t, 3>& v, Element flag) {
+    out_.shape.triangles.push_back(v);
+    out_.shape.triangle_flag.push_back(flag);
+  }
+
+  // The drawing's vertex at x (welded with an earlier one at the same point), located in grid
+  // triangle g.
+  std::int32_t vertex(const Vector2d& x, VertexKind kind, GridLocation where,
+                      const std::array<Vector2d, 3>& g) {
+    if (const std::int32_t v = welded_.find(x, out_.shape.st); v >= 0) {
+      if (kind != VertexKind::Interior) out_.shape.kind[static_cast<std::size_t>(v)] = kind;
+      return v;
+    }
+    const auto v = static_cast<std::int32_t>(out_.shape.st.size());
+    out_.shape.st.push_back(x);
+    out_.shape.kind.push_back(kind);
+    const double total = cross(g[1] - g[0], g[2] - g[0]);
+    where.weights = {cross(g[1] - x, g[2] - x) / total, cross(g[2] - x, g[0] - x) / total,
+                     cross(g[0] - x, g[1] - x) / total};
+    out_.location.push_back(where);
+    welded_.add(x, v);
+    return v;
+  }
+
+  // The vertices on the unit square's sides at their parameters (L1 t = 0 and L3 t = 1 by s, L2
+  // s = 1 and L4 s = 0 by t).
+  void assign_sides() {
+    for (std::size_t v = 0; v < out_.shape.st.size(); ++v) {
+      const Vector2d& st = out_.shape.st[v];
+      const auto w = static_cast<std::int32_t>(v);
+      if (std::abs(st.y()) < kOnSquare) out_.shape.side[0].push_back({st.x(), w});
+      if (std::abs(st.x() - 1) < kOnSquare) out_.shape.side[1].push_back({st.y(), w});
+      if (std::abs(st.y() - 1) < kOnSquare) out_.shape.side[2].push_back({st.x(), w});
+      if (std::abs(st.x()) < kOnSquare) out_.shape.side[3].push_back({st.y(), w});
+    }
+    for (auto& side : out_.shape.side) std::sort(side.begin(), side.end());
+  }
+
+  static constexpr double kOnSquare = 1e-9, kFlat = 1e-18;
+  const Template& in_;
+  int columns_, across_;
+  Overlay out_;
+  Welder welded_;
+};
 
 struct TileSides {
   Permutation junction, seam, midpoint;  // the tile across side a, b (= d), c
@@ -696,6 +809,15 @@ std::vector<TileFrame> tile_frames(const TileSides& sides, const ElementWords& w
   return frame;
 }
 
+// Whether two quarter tubes' lists of vertices on a side they share are at the same parameters.
+bool same_side(const std::vector<std::pair<double, std::int32_t>>& u,
+               const std::vector<std::pair<double, std::int32_t>>& v) {
+  if (u.size() != v.size()) return false;
+  for (std::size_t j = 0; j < u.size(); ++j)
+    if (std::abs(u[j].first - v[j].first) > 1e-6) return false;
+  return true;
+}
+
 // Every flag of M covered once: the pieces' areas over all quarter tubes add up to one flag's
 // area on every flag.
 bool covers_once(const std::vector<TileFrame>& frames, const ElementWords& words,
@@ -714,15 +836,11 @@ Index find_root(std::vector<Index>& parent, Index v) {
   return v;
 }
 
-// The point of tile `grid` at (s, t): bilinear in the grid's cell.
-Vector3d grid_point(const Mesh& surface, const QuarterTubeGrid& grid, const Vector2d& st) {
-  const double u = st.x() * grid.columns, v = st.y() * grid.across;
-  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, grid.columns - 1);
-  const int j = std::clamp(static_cast<int>(std::floor(v)), 0, grid.across - 1);
-  const double fu = u - i, fv = v - j;
-  auto p = [&](int di, int dj) { return surface.positions[grid.at(i + di, j + dj)]; };
-  return (1 - fu) * (1 - fv) * p(0, 0) + fu * (1 - fv) * p(1, 0) + fu * fv * p(1, 1) +
-         (1 - fu) * fv * p(0, 1);
+// The surface's point at a grid location: in the plane of the surface's triangle there.
+Vector3d grid_point(const Mesh& surface, const QuarterTubeGrid& grid, const GridLocation& at) {
+  auto p = [&](int di, int dj) { return surface.positions[grid.at(at.i + di, at.j + dj)]; };
+  if (at.upper) return at.weights[0] * p(0, 0) + at.weights[1] * p(1, 1) + at.weights[2] * p(0, 1);
+  return at.weights[0] * p(0, 0) + at.weights[1] * p(1, 0) + at.weights[2] * p(1, 1);
 }
 
 // Each face label's triangles form one open disk: connected, one boundary loop, Euler
@@ -800,44 +918,46 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
                 std::to_string(tiles) + " quarter tubes");
   progress.step("template", 0.0);
   TemplateBuilder plain(source, pairing.corners, 1.0), mirrored(source, pairing.mirrored, -1.0);
-  const QuarterTubeGrid& first = surface.grids[0];
   const int n = options.subdivisions > 0 ? options.subdivisions : 2;
   const Orbits faces = face_orbits(source);
-  std::array<Template, 2> shapes = {plain.build(n), mirrored.build(n)};
-  for (Template& shape : shapes) {
-    refine_to_grid(shape, first.columns, first.across);
-    flip_to_delaunay(shape, first.columns, first.across, faces.label);
-    smooth(shape, faces.label);
-    flip_to_delaunay(shape, first.columns, first.across, faces.label);
-    for (auto& side : shape.side) std::sort(side.begin(), side.end());
-  }
-  for (std::size_t i = 0; i < 4; ++i) {
-    const auto &u = shapes[0].side[i], &v = shapes[1].side[i];
-    bool same = u.size() == v.size();
-    for (std::size_t j = 0; same && j < u.size(); ++j)
-      same = std::abs(u[j].first - v[j].first) < 1e-6;
-    if (!same)
-      throw Error("the pairing with " + pairing.target + ": Q and c Q disagree on side L" +
-                  std::to_string(i + 1));
-  }
+  const std::array<Template, 2> templates = {plain.build(n), mirrored.build(n)};
 
   progress.step("quarter tubes", 0.2);
   const TileSides sides = tile_sides(surface, tiles);
   const std::vector<TileFrame> frames = tile_frames(sides, words, pairing);
+  // One overlay per template and grid length (a tube's grids grow with its length).
+  std::map<std::pair<bool, int>, Overlay> overlays;
+  std::vector<const Template*> shape_of(tiles);
+  std::vector<const Overlay*> overlay_of(tiles);
+  for (std::size_t g = 0; g < tiles; ++g) {
+    const QuarterTubeGrid& grid = surface.grids[g];
+    const bool m = frames[g].mirrored;
+    auto found = overlays.find({m, grid.columns});
+    if (found == overlays.end())
+      found = overlays
+                  .emplace(std::pair(m, grid.columns),
+                           OverlayBuilder(templates[m], grid.columns, grid.across).build())
+                  .first;
+    overlay_of[g] = &found->second;
+    shape_of[g] = &found->second.shape;
+  }
 
   // Vertices (tile, template vertex), merged across every side they lie on.
   std::vector<Index> offset(tiles + 1, 0);
   for (std::size_t g = 0; g < tiles; ++g)
-    offset[g + 1] = offset[g] + static_cast<Index>(shapes[frames[g].mirrored].st.size());
+    offset[g + 1] = offset[g] + static_cast<Index>(shape_of[g]->st.size());
   std::vector<Index> parent(offset[tiles]);
   std::iota(parent.begin(), parent.end(), Index{0});
   for (std::size_t g = 0; g < tiles; ++g) {
     const std::array<std::int32_t, 4> across = {sides.seam[g], sides.midpoint[g], sides.seam[g],
                                                 sides.junction[g]};
-    const Template& mine = shapes[frames[g].mirrored];
+    const Template& mine = *shape_of[g];
     for (std::size_t i = 0; i < 4; ++i) {
       const auto h = static_cast<std::size_t>(across[i]);
-      const Template& theirs = shapes[frames[h].mirrored];
+      const Template& theirs = *shape_of[h];
+      if (!same_side(mine.side[i], theirs.side[i]))
+        throw Error("the pairing with " + pairing.target + ": quarter tubes " + std::to_string(g) +
+                    " and " + std::to_string(h) + " disagree on side L" + std::to_string(i + 1));
       for (std::size_t j = 0; j < mine.side[i].size(); ++j) {
         const Index u = find_root(parent, offset[g] + static_cast<Index>(mine.side[i][j].second));
         const Index v = find_root(parent, offset[h] + static_cast<Index>(theirs.side[i][j].second));
@@ -850,11 +970,13 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
   std::vector<Index> vertex(offset[tiles], kNoIndex);
   std::set<Index> map_vertices, midpoints;
   for (std::size_t g = 0; g < tiles; ++g) {
-    const Template& shape = shapes[frames[g].mirrored];
+    const Overlay& overlay = *overlay_of[g];
+    const Template& shape = overlay.shape;
     for (std::size_t v = 0; v < shape.st.size(); ++v) {
       const Index root = find_root(parent, offset[g] + static_cast<Index>(v));
       if (vertex[root] == kNoIndex)
-        vertex[root] = mesh.add_vertex(grid_point(surface.mesh, surface.grids[g], shape.st[v]));
+        vertex[root] =
+            mesh.add_vertex(grid_point(surface.mesh, surface.grids[g], overlay.location[v]));
       vertex[offset[g] + v] = vertex[root];
       if (shape.kind[v] == VertexKind::MapVertex) map_vertices.insert(vertex[root]);
       if (shape.kind[v] == VertexKind::EdgeMidpoint) midpoints.insert(vertex[root]);
@@ -864,7 +986,7 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
   std::vector<std::int32_t> face_label, tile_label;
   std::set<std::pair<Index, Index>> segments;
   for (std::size_t g = 0; g < tiles; ++g) {
-    const Template& shape = shapes[frames[g].mirrored];
+    const Template& shape = *shape_of[g];
     const bool flip = !surface.grids[g].counterclockwise;
     auto at = [&](std::int32_t v) { return vertex[offset[g] + static_cast<Index>(v)]; };
     for (std::size_t k = 0; k < shape.triangles.size(); ++k) {
@@ -893,7 +1015,7 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
   stats.edges = midpoints.size();
   const FundamentalTriangle base = fundamental_triangle(source.p, source.q);
   stats.covers_once =
-      covers_once(frames, words, shapes,
+      covers_once(frames, words, templates,
                   polygon_area(base.geometry, {base.corners.begin(), base.corners.end()}));
   const auto& labels = mesh.face_attributes.at(kFaceAttribute);
   stats.faces = std::set<std::int32_t>(labels.begin(), labels.end()).size();

@@ -8,13 +8,16 @@
 //      Klein model (where geodesics are straight), fanned and subdivided, welded into one
 //      triangulated disk; its sides at their arc-length parameters on the unit square's sides
 //      (L1 t = 0 from P1, L2 s = 1 from P2, L3 t = 1 from P4, L4 s = 0 from P1), the rest by
-//      Floater's mean-value map (no folds), then split to the grid's cell size (the grid's nodes
-//      on the sides included) and flipped to Delaunay within M's faces;
+//      Floater's mean-value map (no folds), then laid over the quarter tube's grid: every
+//      template triangle clipped to every grid triangle it meets (the surface's quads fanned
+//      from their (i, j) corner), the convex pieces fanned, so that every triangle of the drawing
+//      lies in one triangle of the surface and one flag of M;
 //   2. the group: each quarter tube carries g Q or g c Q, by a walk over the mesh's adjacency
 //      (across the junction the same g, across a seam g x^-1 and back g x, across the midpoint
 //      g y x^-1 and back), checked on every adjacency and for injectivity;
-//   3. the mesh: the template in every quarter tube at the grid's point (s columns, t across),
-//      triangles labelled with M's face of g times their flag, side vertices shared with the
+//   3. the mesh: the overlay in every quarter tube, each vertex in the plane of its surface
+//      triangle (the drawing is a subdivision of the surface: it self-intersects only where the
+//      surface does), triangles labelled with M's face of g times their flag, side vertices shared with the
 //      neighbour's (both templates cut a side alike: the pairing's rotations map one onto the
 //      other); M's edges are the template's edges along N-O sides.
 // Checks, all from the built mesh: closed, oriented, genus, the pieces' areas cover every flag
@@ -38,7 +41,7 @@ namespace tessera::regmap {
 inline constexpr const char* kFaceAttribute = "face";
 
 struct MappedMapOptions {
-  int subdivisions = 0;  // of the template's pieces before refining to the grid; 0 picks 2
+  int subdivisions = 0;  // of the template's pieces before the overlay; 0 picks 2
   bool find_self_intersections = true;
 };
 
