@@ -232,6 +232,8 @@ TEST(RegmapMappedMap, DrawsThroughRotationPairings) {
   expect_drawn("R2.6", "{4,4}_(1,0)");
   expect_drawn("R9.3'", "R2.1'");
   expect_drawn("R5.8", "R2.4");
+  // A bouquet's surface, where vertices a hair off a side once let the side's edge pass them.
+  expect_drawn("R6.5", "R3.12");
 }
 
 // The manifest's form of a pairing reads back as the same pairing, and a damaged one is refused.

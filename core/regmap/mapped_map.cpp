@@ -734,12 +734,18 @@ class OverlayBuilder {
   // s = 1 and L4 s = 0 by t).
   void assign_sides() {
     for (std::size_t v = 0; v < out_.shape.st.size(); ++v) {
-      const Vector2d& st = out_.shape.st[v];
+      Vector2d& st = out_.shape.st[v];
       const auto w = static_cast<std::int32_t>(v);
-      if (std::abs(st.y()) < kOnSquare) out_.shape.side[0].push_back({st.x(), w});
-      if (std::abs(st.x() - 1) < kOnSquare) out_.shape.side[1].push_back({st.y(), w});
-      if (std::abs(st.y() - 1) < kOnSquare) out_.shape.side[2].push_back({st.x(), w});
-      if (std::abs(st.x()) < kOnSquare) out_.shape.side[3].push_back({st.y(), w});
+      // Snapped onto the side exactly: a vertex a hair inside would let the simplifier take the
+      // side's edge past it.
+      if (std::abs(st.y()) < kOnSquare) st.y() = 0;
+      if (std::abs(st.x() - 1) < kOnSquare) st.x() = 1;
+      if (std::abs(st.y() - 1) < kOnSquare) st.y() = 1;
+      if (std::abs(st.x()) < kOnSquare) st.x() = 0;
+      if (st.y() == 0) out_.shape.side[0].push_back({st.x(), w});
+      if (st.x() == 1) out_.shape.side[1].push_back({st.y(), w});
+      if (st.y() == 1) out_.shape.side[2].push_back({st.x(), w});
+      if (st.x() == 0) out_.shape.side[3].push_back({st.y(), w});
     }
     for (auto& side : out_.shape.side) std::sort(side.begin(), side.end());
   }
