@@ -21,7 +21,7 @@ const SHARES = {
 };
 
 test('On a surface: R3.1 drawn on the tetrahedron, V 24, E 84, F 56, edges drawn, a valid GLB, a shared link', async ({ page, url }) => {
-  await openMap(page, url, '#mode=regmap&map=R3.1');
+  await openMap(page, url, '#mode=regmap&map=R3.1&view=tiling');
   const start = Date.now();
   await page.getByRole('radio', { name: 'On a surface' }).check();
   await drawnShown(page);
@@ -35,7 +35,8 @@ test('On a surface: R3.1 drawn on the tetrahedron, V 24, E 84, F 56, edges drawn
   assert.equal(await drawnFigure(page, 'F'), '56 = 56');
   assert.equal(await drawnFigure(page, 'genus'), '3');
   for (const key of ['faces_are_disks', 'covers_once', 'closed', 'oriented']) assert.equal(await drawnFigure(page, key), 'yes', key);
-  assert.equal(await page.evaluate(() => location.hash), '#mode=regmap&map=R3.1&view=map');
+  // The drawn map is the default view: its link names no view.
+  assert.equal(await page.evaluate(() => location.hash), '#mode=regmap&map=R3.1');
   const shares = await pixelShares(page, SHARES);
   assert.ok(shares.colour > 0.03, `the faces cover ${shares.colour} of the view`);
   assert.ok(shares.dark > 0.001, `the edges cover ${shares.dark} of the view`);
@@ -54,7 +55,16 @@ test('On a surface: R3.1 drawn on the tetrahedron, V 24, E 84, F 56, edges drawn
   assert.ok((await foregroundShare(page)) > 0.05);
 });
 
-test('On a surface: a link names the surface; R2.4, with no realization, says what was tried and the page stays usable', async ({ page, url }) => {
+test('On a surface: the default view of a map; a link names the surface; R2.4, with no realization, says what was tried and the page stays usable', async ({ page, url }) => {
+  const start = Date.now();
+  await openMap(page, url, "#mode=regmap&map=R13.2'");
+  await drawnShown(page);
+  console.log(`    R13.2' drawn on its surface in the page: ${((Date.now() - start) / 1000).toFixed(2)} s from opening the link`);
+  assert.equal(await drawnFigure(page, 'target'), "R3.4' (catalog)");
+  assert.equal(await drawnFigure(page, 'F'), '24 = 24');
+  assert.ok(await page.getByRole('radio', { name: 'On a surface' }).isChecked());
+  assert.ok(await page.locator('#tiling-view').isHidden());
+
   await openMap(page, url, "#mode=regmap&map=R9.3'&view=map&on=R2.1'");
   await drawnShown(page);
   assert.equal(await drawnFigure(page, 'target'), "R2.1' (catalog)");

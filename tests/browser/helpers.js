@@ -152,8 +152,8 @@ export function gridObj(n) {
 
 export const PAPER_RGB = [0xf6, 0xf3, 0xec]; // the sheet behind a tiling (.tiling-stage img in style.css)
 
-/** Opens the page on a link of the Regular maps mode and waits until a map is shown and no job runs. */
-export async function openMap(page, url, hash = '#mode=regmap') {
+/** Opens the page on a link of the Regular maps mode (by default its 2D tiling) and waits until a map is shown and no job runs. */
+export async function openMap(page, url, hash = '#mode=regmap&view=tiling') {
   await page.goto(`${url}${hash}`);
   await page.locator('[data-role=map-name]').filter({ hasText: /\S/ }).waitFor();
   await idle(page);

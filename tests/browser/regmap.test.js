@@ -23,7 +23,7 @@ async function assertTilingDrawn(page, what) {
 }
 
 test('Regular maps: a link to R3.1 shows its figures and its tiling', async ({ page, url }) => {
-  await openMap(page, url, '#mode=regmap&map=R3.1');
+  await openMap(page, url, '#mode=regmap&map=R3.1&view=tiling');
   assert.equal(await page.locator('[data-role=map-name]').textContent(), 'R3.1');
   assert.deepEqual(await figures(page, ['order', 'vertices', 'edges', 'faces', 'genus']), ['336', '24', '84', '56', '3']);
   assert.deepEqual(await figures(page, ['type', 'petrie', 'euler']), ['{3,7}', '8', '-4']);
@@ -45,7 +45,7 @@ test('Regular maps: R2.4 found by search, its link reopens it in a fresh page', 
   await assertTilingDrawn(page, 'R2.4');
   await page.screenshot({ path: `${RESULTS}/regmap-R2.4.png` });
   const link = page.url();
-  assert.match(link, /#mode=regmap&map=R2\.4$/);
+  assert.match(link, /#mode=regmap&map=R2\.4&view=tiling$/);
 
   const fresh = await context.newPage();
   await openMap(fresh, link, '');
@@ -56,10 +56,10 @@ test('Regular maps: R2.4 found by search, its link reopens it in a fresh page', 
   await fresh.getByRole('button', { name: "Show its dual, R2.4'" }).click();
   await mapShown(fresh, "R2.4'");
   assert.deepEqual(await figures(fresh, ['type', 'vertices', 'faces']), ['{10,5}', '2', '1']);
-  assert.equal(new URL(fresh.url()).hash, '#mode=regmap&map=R2.4%27');
+  assert.equal(new URL(fresh.url()).hash, '#mode=regmap&map=R2.4%27&view=tiling');
 
   await fresh.evaluate(() => {
-    location.hash = '#mode=regmap&map=R2.1';
+    location.hash = '#mode=regmap&map=R2.1&view=tiling';
   });
   await mapShown(fresh, 'R2.1');
   assert.equal(await mapFigure(fresh, 'order'), '96');
@@ -115,7 +115,7 @@ test('Regular maps: a typed infinite presentation gets a clear error and the pag
   await mapShown(page, 'Cube (typed presentation)');
   assert.deepEqual(await figures(page, ['order', 'vertices', 'edges', 'faces', 'genus']), ['48', '8', '12', '6', '0']);
   assert.ok(await message(page).isHidden(), 'the old error stays after a successful job');
-  assert.equal(new URL(page.url()).hash, '#mode=regmap', 'a typed presentation is not a catalog link');
+  assert.equal(new URL(page.url()).hash, '#mode=regmap&view=tiling', 'a typed presentation is not a catalog link');
   await assertTilingDrawn(page, 'the cube');
 });
 
@@ -137,20 +137,20 @@ test('Regular maps: malformed and hostile presentations are shown as text, never
 });
 
 test('Regular maps: a bad map in the link gets a notice and the default map', async ({ page, url }) => {
-  await openMap(page, url, '#mode=regmap&map=R999.1');
+  await openMap(page, url, '#mode=regmap&map=R999.1&view=tiling');
   assert.equal(await page.locator('[data-role=map-name]').textContent(), 'R3.1');
   const notice = page.getByRole('status').filter({ hasText: 'There is no map named "R999.1" in the catalog.' });
   assert.match(await notice.textContent(), /R2\.1 to R101\.56/);
 
   await page.goto('about:blank');
-  await openMap(page, url, '#mode=regmap&map=%3Cscript%3E');
+  await openMap(page, url, '#mode=regmap&map=%3Cscript%3E&view=tiling');
   assert.equal(await page.locator('[data-role=map-name]').textContent(), 'R3.1');
   const ignored = page.getByRole('status').filter({ hasText: 'Parts of the link were ignored.' });
   assert.match(await ignored.textContent(), /"map" has an invalid value/);
 });
 
 test('Regular maps: the tiling zooms, pans, fits and downloads as SVG', async ({ page, url }) => {
-  await openMap(page, url, '#mode=regmap&map=R2.4');
+  await openMap(page, url, '#mode=regmap&map=R2.4&view=tiling');
   const image = page.locator('#tiling-view img');
   const box = async () => image.evaluate((img) => img.getBoundingClientRect().toJSON());
   const fitted = await box();
@@ -230,8 +230,10 @@ test('Regular maps: the tabs switch modes, each keeps what it shows, a dropped m
   await openPage(page, url);
   await page.getByRole('tab', { name: 'Regular maps' }).click();
   await mapShown(page, 'R3.1');
-  assert.ok(await page.locator('#tiling-view').isVisible());
-  assert.ok(await page.locator('#view-controls').isHidden(), 'the 3D view settings show in the 2D view');
+  // The mode opens on its default view, the map drawn on a surface.
+  assert.ok(await page.getByRole('radio', { name: 'On a surface' }).isChecked());
+  assert.ok(await page.locator('#tiling-view').isHidden(), 'the 2D tiling covers the drawn map');
+  await page.locator('[data-role=drawn-result]').waitFor();
   assert.match(new URL(page.url()).hash, /mode=regmap/);
   await page.getByRole('tab', { name: 'Quad layout' }).click();
   assert.ok(await page.locator('#tiling-view').isHidden());
@@ -247,7 +249,7 @@ test('Regular maps: the tabs switch modes, each keeps what it shows, a dropped m
 
 test('Regular maps: a core that cannot be loaded is reported, and the catalog loads when the mode is shown again', async ({ page, url }) => {
   await page.route('**/wasm/tessera.mjs', (route) => route.abort());
-  await page.goto(`${url}#mode=regmap&map=R2.4`);
+  await page.goto(`${url}#mode=regmap&map=R2.4&view=tiling`);
   const alert = page.getByRole('alert');
   await alert.waitFor();
   assert.match(await alert.textContent(), /geometry core .* could not be started/);

@@ -45,7 +45,7 @@ async function assertSurfaceDrawn(page, what) {
 }
 
 test('Regular surface: R2.4 in the 3D view, coloured by quarter tube, genus 5, 20 quarter tubes, a valid GLB', async ({ page, url }) => {
-  await openMap(page, url, '#mode=regmap&map=R2.4');
+  await openMap(page, url, '#mode=regmap&map=R2.4&view=tiling');
   await page.getByLabel('3D surface').check();
   await surfaceShown(page);
   await page.screenshot({ path: `${RESULTS}/surface-R2.4.png` });
@@ -84,7 +84,7 @@ test('Regular surface: R2.4 in the 3D view, coloured by quarter tube, genus 5, 2
 
   await page.getByLabel('2D tiling').check();
   assert.ok(await page.locator('#tiling-view img').isVisible(), 'the tiling does not come back');
-  assert.equal(await hash(page), '#mode=regmap&map=R2.4');
+  assert.equal(await hash(page), '#mode=regmap&map=R2.4&view=tiling');
 });
 
 test('Regular surface: a shared link reopens it with its options; each mode keeps its own 3D scene', async ({ page, url }) => {

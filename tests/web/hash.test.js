@@ -151,8 +151,11 @@ describe('formatHash', () => {
       expect(parsed.problems).toHaveLength(1);
     }
     const regmap = { ...DEFAULT_STATE, mode: 'regmap', map: 'R3.1' };
-    expect(formatHash({ ...regmap, view: 'map', on: 'Tetrahedron' })).toBe('#mode=regmap&map=R3.1&view=map&on=Tetrahedron');
-    expect(formatHash({ ...regmap, view: 'map' })).toBe('#mode=regmap&map=R3.1&view=map');
+    // The drawn map is the mode's default view: a link names the others.
+    expect(DEFAULT_STATE.view).toBe('map');
+    expect(formatHash({ ...regmap, on: 'Tetrahedron' })).toBe('#mode=regmap&map=R3.1&on=Tetrahedron');
+    expect(formatHash(regmap)).toBe('#mode=regmap&map=R3.1');
+    expect(formatHash({ ...regmap, view: 'tiling' })).toBe('#mode=regmap&map=R3.1&view=tiling');
   });
 
   it('writes Field options only when they differ from the defaults', () => {

@@ -25,8 +25,9 @@ const FIELDS = Object.freeze({
   shading: oneOf(['flat', 'smooth']),
   wireframe: flag,
   map: mapName,
-  // The Regular maps mode's view (2D tiling, the map drawn on a surface, or its own regular surface:
-  // built on opening), the surface a map is drawn on (none: the best), the surface options.
+  // The Regular maps mode's view (the map drawn on a surface, the default; its 2D tiling; or its own
+  // regular surface, built on opening), the surface a map is drawn on (none: the best), the surface
+  // options.
   view: oneOf(['tiling', 'map', 'surface']),
   on: targetName,
   ...SURFACE_PARSERS,
@@ -42,7 +43,7 @@ export const DEFAULT_STATE = Object.freeze({
   shading: 'flat',
   wireframe: false,
   map: null,
-  view: 'tiling',
+  view: 'map',
   on: null,
   ...SURFACE_DEFAULTS,
   field: false,
