@@ -408,6 +408,11 @@ struct GridLocation {
   Vector3d weights = Vector3d::Zero();
 };
 
+// The corners of a cell's two triangles, lower and upper, as steps (di, dj) from its (i, j) node,
+// in the order GridLocation's weights take them.
+constexpr std::array<std::array<std::array<int, 2>, 3>, 2> kGridTriangle = {
+    {{{{0, 0}, {1, 0}, {1, 1}}}, {{{0, 0}, {1, 1}, {0, 1}}}}};
+
 // A template laid over the grid: its triangles cut by the grid's triangles, so that every
 // triangle of the drawing lies in one triangle of the surface (the drawing is a subdivision of
 // the surface mesh and has its self-intersections, no others) and in one of M's flags.
@@ -474,13 +479,12 @@ class OverlaySimplifier {
     const int zero = std::abs(at.weights[0]) < kOnLine   ? 0
                      : std::abs(at.weights[1]) < kOnLine ? 1
                                                          : 2;
-    // The line opposite corner `zero` of the grid triangle: its two other corners.
-    const Vector2d cell(double(at.i), double(at.j));
-    const std::array<Vector2d, 3> corners =
-        at.upper ? std::array<Vector2d, 3>{cell, cell + Vector2d(1, 1), cell + Vector2d(0, 1)}
-                 : std::array<Vector2d, 3>{cell, cell + Vector2d(1, 0), cell + Vector2d(1, 1)};
-    const Vector2d p = corners[(zero + 1) % 3], q = corners[(zero + 2) % 3];
-    return std::abs(cross((q - p).normalized(), (b - a).cwiseProduct(scale_))) < kOnLine;
+    // The line opposite corner `zero` of the grid triangle, through its two other corners.
+    const auto& corners = kGridTriangle[at.upper];
+    const auto& p = corners[static_cast<std::size_t>(zero + 1) % 3];
+    const auto& q = corners[static_cast<std::size_t>(zero + 2) % 3];
+    const Vector2d along(q[0] - p[0], q[1] - p[1]);
+    return std::abs(cross(along.normalized(), (b - a).cwiseProduct(scale_))) < kOnLine;
   }
 
   bool collapse(std::size_t v) {
@@ -656,9 +660,12 @@ class OverlayBuilder {
   }
 
   std::array<Vector2d, 3> grid_triangle(int i, int j, bool upper) const {
-    auto node = [&](int a, int b) { return Vector2d(double(a) / columns_, double(b) / across_); };
-    if (upper) return {node(i, j), node(i + 1, j + 1), node(i, j + 1)};
-    return {node(i, j), node(i + 1, j), node(i + 1, j + 1)};
+    std::array<Vector2d, 3> corners;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const auto [di, dj] = kGridTriangle[upper][c];
+      corners[c] = {double(i + di) / columns_, double(j + dj) / across_};
+    }
+    return corners;
   }
 
   // A convex piece of template triangle k inside one grid triangle: its vertices welded with the
@@ -844,9 +851,13 @@ Index find_root(std::vector<Index>& parent, Index v) {
 
 // The surface's point at a grid location: in the plane of the surface's triangle there.
 Vector3d grid_point(const Mesh& surface, const QuarterTubeGrid& grid, const GridLocation& at) {
-  auto p = [&](int di, int dj) { return surface.positions[grid.at(at.i + di, at.j + dj)]; };
-  if (at.upper) return at.weights[0] * p(0, 0) + at.weights[1] * p(1, 1) + at.weights[2] * p(0, 1);
-  return at.weights[0] * p(0, 0) + at.weights[1] * p(1, 0) + at.weights[2] * p(1, 1);
+  Vector3d point = Vector3d::Zero();
+  for (std::size_t c = 0; c < 3; ++c) {
+    const auto [di, dj] = kGridTriangle[at.upper][c];
+    point +=
+        at.weights[static_cast<Eigen::Index>(c)] * surface.positions[grid.at(at.i + di, at.j + dj)];
+  }
+  return point;
 }
 
 // Each face label's triangles form one open disk: connected, one boundary loop, Euler
