@@ -234,6 +234,9 @@ TEST(RegmapMappedMap, DrawsThroughRotationPairings) {
   expect_drawn("R5.8", "R2.4");
   // A bouquet's surface, where vertices a hair off a side once let the side's edge pass them.
   expect_drawn("R6.5", "R3.12");
+  // A quarter tube whose far corners lay within 1e-7 of the Klein disk's rim about its corners'
+  // mean: the two templates then disagreed on a side's points.
+  expect_drawn("R37.17", "R10.15");
 }
 
 // The manifest's form of a pairing reads back as the same pairing, and a damaged one is refused.
