@@ -152,9 +152,12 @@ constexpr const char* kRealizeHelp =
     "\n"
     "The automatic realization (thesis Sec. 9.6): every catalog map of the genus range and its\n"
     "dual is paired with every target of its genus (see 'tessera regmap map --help'); the best\n"
-    "ranked target is kept with its pairing, the others that work are listed. Prints the counts;\n"
-    "-o writes the manifest {version, genus, maps: [{source, genus, target, target_kind, score,\n"
-    "others, pairing}], unrealized: [names]} that the page reads instead of searching.\n"
+    "ranked target is kept with its pairing, the others that work are listed. A target whose\n"
+    "regular surface crosses itself gives way to the next that does not (each chosen surface is\n"
+    "built and searched for crossings once). Prints the counts; -o writes the manifest\n"
+    "{version, genus, maps: [{source, genus, target, target_kind, score, others, surface: {base,\n"
+    "self_intersections}, pairing}], unrealized: [names]} that the page reads instead of "
+    "searching.\n"
     "  --genus G..H    the genus range (default 2..101)\n"
     "  --max-steps N   work limit of each pairing search (default 2000000)\n"
     "  --radius R      rotation pairings: corners within this hyperbolic distance (default 4.5)\n"
@@ -561,8 +564,9 @@ int realize(const Args& args) {
   const regmap::Catalog catalog = regmap::read_catalog(catalog_path());
   const std::vector<regmap::TargetMap> targets = regmap::all_targets(catalog, hi);
   regmap::TargetGroups groups(limits);
+  regmap::TargetSurfaces surfaces(limits);
   Json maps = Json::array(), unrealized = Json::array();
-  std::size_t sources = 0, non_hosohedral = 0, by_reflections = 0, errors = 0;
+  std::size_t sources = 0, non_hosohedral = 0, crossing_free = 0, by_reflections = 0, errors = 0;
   int highest = 0;
   std::set<std::string> seen;
   for (const regmap::CatalogEntry& row : catalog) {
@@ -574,24 +578,30 @@ int realize(const Args& args) {
         const regmap::FiniteGroup group =
             regmap::enumerate_group(regmap::presentation_of(entry), limits);
         const regmap::ElementWords words(group);
-        const regmap::RealizationSearch search =
+        regmap::RealizationSearch search =
             regmap::find_realizations(group, words, entry.genus, targets, pairing_limits, groups);
         if (search.found.empty()) {
           unrealized.push_back(entry.name);
           continue;
         }
+        regmap::prefer_crossing_free(search, surfaces, groups);
         const regmap::Realization& best = search.found.front();
+        const regmap::TargetSurface& surface = surfaces.surface(best.target, groups);
         Json others = Json::array();
         for (std::size_t k = 1; k < search.found.size(); ++k)
           others.push_back(search.found[k].target.name);
-        maps.push_back({{"source", entry.name},
-                        {"genus", entry.genus},
-                        {"target", best.target.name},
-                        {"target_kind", regmap::to_string(best.target.kind)},
-                        {"score", best.score},
-                        {"others", others},
-                        {"pairing", regmap::pairing_json(best.pairing)}});
+        maps.push_back(
+            {{"source", entry.name},
+             {"genus", entry.genus},
+             {"target", best.target.name},
+             {"target_kind", regmap::to_string(best.target.kind)},
+             {"score", best.score},
+             {"others", others},
+             {"surface",
+              {{"base", surface.base}, {"self_intersections", surface.self_intersections}}},
+             {"pairing", regmap::pairing_json(best.pairing)}});
         if (best.target.kind != regmap::TargetKind::Hosohedron) ++non_hosohedral;
+        if (surface.self_intersections == 0) ++crossing_free;
         if (best.pairing.kind == regmap::PairingKind::Reflections) ++by_reflections;
         highest = std::max(highest, entry.genus);
       } catch (const Error& e) {
@@ -609,6 +619,7 @@ int realize(const Args& args) {
                        {"maps", sources},
                        {"realized", maps.size()},
                        {"non_hosohedral", non_hosohedral},
+                       {"self_intersection_free", crossing_free},
                        {"by_reflections", by_reflections},
                        {"by_rotations", maps.size() - by_reflections},
                        {"errors", errors},
@@ -628,10 +639,10 @@ int realize(const Args& args) {
     return 0;
   }
   std::printf(
-      "genus %d..%d: %zu maps, %zu realized (%zu on non-hosohedral surfaces; %zu by reflections, "
-      "%zu by rotations), highest genus %d, %.1f s\n",
-      lo, hi, sources, maps.size(), non_hosohedral, by_reflections, maps.size() - by_reflections,
-      highest, seconds);
+      "genus %d..%d: %zu maps, %zu realized (%zu on non-hosohedral surfaces, %zu on surfaces free "
+      "of self-intersections; %zu by reflections, %zu by rotations), highest genus %d, %.1f s\n",
+      lo, hi, sources, maps.size(), non_hosohedral, crossing_free, by_reflections,
+      maps.size() - by_reflections, highest, seconds);
   if (!output.empty()) std::printf("  wrote %s\n", output.c_str());
   return 0;
 }

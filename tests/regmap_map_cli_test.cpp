@@ -95,9 +95,13 @@ TEST(RegmapRealizeCli, CountsAndManifestOfGenusThree) {
   for (const auto& m : manifest["maps"]) {
     EXPECT_EQ(m["genus"], 3);
     EXPECT_TRUE(m["pairing"].contains("corners"));
+    // Every chosen surface is built and searched for crossings (none at genus 3).
+    EXPECT_TRUE(m["surface"]["base"].is_string());
+    EXPECT_EQ(m["surface"]["self_intersections"], 0);
     if (m["source"] == "R3.1") klein = m["target"] == "Tetrahedron";
   }
   EXPECT_TRUE(klein);
+  EXPECT_EQ(counts["self_intersection_free"], counts["realized"]);
   for (const char* args : {"regmap realize --genus 1", "regmap realize --genus 5..3",
                            "regmap realize --genus x", "regmap realize R3.1"}) {
     const auto bad = run_cli(args, true);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/error.h"
+#include "regmap/regular_surface.h"
 
 namespace tessera::regmap {
 
@@ -19,6 +20,29 @@ const FiniteGroup& TargetGroups::group(const TargetMap& target) {
   if (found == groups_.end())
     found = groups_.emplace(target.name, enumerate_group(target.presentation, limits_)).first;
   return found->second;
+}
+
+const TargetSurface& TargetSurfaces::surface(const TargetMap& target, TargetGroups& groups) {
+  auto found = surfaces_.find(target.name);
+  if (found == surfaces_.end()) {
+    const RegularSurface built =
+        build_regular_surface(target.presentation, groups.group(target), {}, limits_);
+    found =
+        surfaces_
+            .emplace(target.name, TargetSurface{built.stats.base, built.stats.self_intersections})
+            .first;
+  }
+  return found->second;
+}
+
+void prefer_crossing_free(RealizationSearch& search, TargetSurfaces& surfaces,
+                          TargetGroups& groups) {
+  auto& found = search.found;
+  for (auto r = found.begin(); r != found.end(); ++r) {
+    if (surfaces.surface(r->target, groups).self_intersections > 0) continue;
+    std::rotate(found.begin(), r, r + 1);
+    return;
+  }
 }
 
 RealizationSearch find_realizations(const FiniteGroup& source, const ElementWords& words, int genus,

@@ -2,6 +2,8 @@
 // the map's genus is tried and the pairings ranked. A hosohedral surface (two junctions) shows
 // least of the map, so it comes last; then pairings by reflections (the drawing keeps T's
 // mirrors) before rotation pairings, each by its quadrilateral's distortion; then more junctions.
+// A surface that crosses itself is passed over for the next one that does not
+// (prefer_crossing_free), which costs building the surfaces and so is the batch's choice.
 #pragma once
 
 #include <map>
@@ -43,10 +45,34 @@ class TargetGroups {
   std::map<std::string, FiniteGroup> groups_;
 };
 
+// What a target's regular surface is, as built for drawing (with the search for crossings): its
+// base ("relaxation", "spine" or a symmetric base's name) and its self-intersecting triangle pairs,
+// which a drawing on it has too (the drawing subdivides the surface).
+struct TargetSurface {
+  std::string base;
+  std::size_t self_intersections = 0;
+};
+
+// Targets' surfaces, built once each.
+class TargetSurfaces {
+ public:
+  explicit TargetSurfaces(const Limits& limits) : limits_(limits) {}
+  const TargetSurface& surface(const TargetMap& target, TargetGroups& groups);
+
+ private:
+  Limits limits_;
+  std::map<std::string, TargetSurface> surfaces_;
+};
+
 // Searches `targets` (those of other genus are skipped) for pairings with M.
 RealizationSearch find_realizations(const FiniteGroup& source, const ElementWords& words, int genus,
                                     const std::vector<TargetMap>& targets,
                                     const PairingLimits& pairing_limits, TargetGroups& groups);
+
+// Moves the first realization (in ranked order) whose surface does not cross itself to the front,
+// building surfaces only until one is found; leaves the order when every surface crosses itself.
+void prefer_crossing_free(RealizationSearch& search, TargetSurfaces& surfaces,
+                          TargetGroups& groups);
 
 // A pairing as the manifest (data/regmaps/realizations.json) and the GLB's extras keep it:
 // target, kind, x, y (a, b, c for reflections), apex, distortion, corners and mirrored as
