@@ -30,6 +30,13 @@ describe('parseHash', () => {
       sharp: 180,
       h: 0.05,
       texture: 'grid',
+      find: null,
+      genus: null,
+      p: null,
+      q: null,
+      realized: false,
+      kind: null,
+      sort: null,
     });
     expect(parseHash('wireframe=0').state.wireframe).toBe(false);
   });
@@ -55,7 +62,7 @@ describe('parseHash', () => {
   });
 
   it('drops malformed values with a note and keeps the defaults', () => {
-    const { state, problems } = parseHash('#mode=gallery&shading=shiny&wireframe=yes&sample=&map=');
+    const { state, problems } = parseHash('#mode=atlas&shading=shiny&wireframe=yes&sample=&map=');
     expect(state).toEqual(DEFAULT_STATE);
     expect(problems).toHaveLength(5);
     expect(problems.join(' ')).toMatch(/"mode".*"shading".*"wireframe".*"sample".*"map"/);

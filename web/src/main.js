@@ -7,9 +7,10 @@ import { Jobs } from './ui/jobs.js';
 import { acceptFiles } from './ui/file-drop.js';
 import { createViewControls } from './ui/view-controls.js';
 import { createTabs } from './ui/tabs.js';
-import { formatHash, parseHash } from './ui/hash.js';
 import { QuadLayoutMode } from './ui/quad-layout-mode.js';
 import { RegularMapMode } from './ui/regmap-mode.js';
+import { GalleryMode } from './ui/gallery-mode.js';
+import { DEFAULT_STATE, formatHash, parseHash } from './ui/hash.js';
 import { TilingView } from './ui/tiling-view.js';
 import { DrawnView } from './ui/drawn-view.js';
 import { SurfaceView } from './ui/surface-view.js';
@@ -73,6 +74,16 @@ const modes = {
     client,
     jobs,
     status,
+    onStateChange: updateState,
+  }),
+  gallery: new GalleryMode({
+    panel: byId('gallery-panel'),
+    grid: byId('gallery'),
+    client,
+    jobs,
+    status,
+    base: import.meta.env.BASE_URL,
+    mapLink: (map) => formatHash({ ...DEFAULT_STATE, mode: 'regmap', map }),
     onStateChange: updateState,
   }),
 };

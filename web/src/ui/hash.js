@@ -5,6 +5,7 @@
 import { MODES } from './modes.js';
 import { FIELD_DEFAULTS, FIELD_PARSERS } from './field-options.js';
 import { SURFACE_DEFAULTS, SURFACE_PARSERS } from './surface-options.js';
+import { BASE_KINDS, SORT_KEYS } from './gallery-data.js';
 
 const MAX_HASH_LENGTH = 2000;
 
@@ -35,6 +36,15 @@ const FIELDS = Object.freeze({
   field: flag,
   ...FIELD_PARSERS,
   texture: oneOf(['off', 'checker', 'grid']),
+  // The Gallery's filters: a name fragment, a genus or genus range, p, q, realized maps only, the
+  // kind of surface base, the order (genus when absent).
+  find: (text) => (/^[A-Za-z0-9.']{1,16}$/.test(text) ? text : undefined),
+  genus: (text) => (/^\d{1,4}(-\d{1,4})?$/.test(text) ? text : undefined),
+  p: (text) => (/^\d{1,4}$/.test(text) ? text : undefined),
+  q: (text) => (/^\d{1,4}$/.test(text) ? text : undefined),
+  realized: flag,
+  kind: oneOf(BASE_KINDS),
+  sort: oneOf(SORT_KEYS.filter((key) => key !== 'genus')),
 });
 
 export const DEFAULT_STATE = Object.freeze({
@@ -49,6 +59,13 @@ export const DEFAULT_STATE = Object.freeze({
   field: false,
   ...FIELD_DEFAULTS,
   texture: 'off',
+  find: null,
+  genus: null,
+  p: null,
+  q: null,
+  realized: false,
+  kind: null,
+  sort: null,
 });
 
 /**

@@ -5,4 +5,5 @@
 export const MODES = Object.freeze([
   { id: 'quad', label: 'Quad layout', scene: 'mesh' },
   { id: 'regmap', label: 'Regular maps', scene: 'surface' },
+  { id: 'gallery', label: 'Gallery', scene: 'surface' },
 ]);

@@ -1,0 +1,84 @@
+import { describe, expect, it } from 'vitest';
+import { baseKind, filterGallery, galleryEntries, parseGalleryQuery, sortGallery, thumbnailFile } from '../../web/src/ui/gallery-data.js';
+import { formatHash, parseHash } from '../../web/src/ui/hash.js';
+
+const row = (name, genus, p, q, order, vertices, edges, faces) => ({ name, genus, p, q, petrie: 2, order, vertices, edges, faces });
+const ROWS = [
+  row('R2.1', 2, 3, 8, 96, 6, 24, 16),
+  row('R2.4', 2, 5, 10, 20, 1, 5, 2),
+  row('R3.1', 3, 3, 7, 336, 24, 84, 56),
+  row('R10.2', 10, 3, 4, 48, 4, 6, 4),
+  row('R9.3', 9, 4, 6, 240, 40, 80, 30),
+];
+// Manifest entries as `tessera regmap realize` writes them (the pairing left out).
+const MANIFEST = [
+  { source: 'R3.1', target: 'Tetrahedron', target_kind: 'platonic', others: [], surface: { base: 'relaxation', self_intersections: 0 } },
+  { source: "R9.3'", target: "R2.1'", target_kind: 'catalog', others: ['{2,10}'], surface: { base: '2-Cube', self_intersections: 0 } },
+  { source: 'R2.1', target: '{6,3}_(1,0)', target_kind: 'torus', others: [], surface: { base: 'spine', self_intersections: 3 } },
+  { source: 'R10.2', target: '{2,11}', target_kind: 'hosohedron', others: [] },
+];
+const entries = galleryEntries(ROWS, MANIFEST);
+const names = (list) => list.map((e) => e.name);
+const query = (fields) => {
+  const { query: q, problems } = parseGalleryQuery(fields);
+  expect(problems).toEqual({});
+  return names(filterGallery(entries, q));
+};
+
+describe('gallery cards', () => {
+  it('has every map and its dual, with the dual figures swapped', () => {
+    expect(entries).toHaveLength(2 * ROWS.length);
+    const dual = entries.find((e) => e.name === "R2.1'");
+    expect([dual.p, dual.q, dual.vertices, dual.faces]).toEqual([8, 3, 16, 6]);
+  });
+
+  it('joins the realizations by name, with the kind of their base', () => {
+    const klein = entries.find((e) => e.name === 'R3.1').realization;
+    expect(klein).toMatchObject({ target: 'Tetrahedron', kind: 'relaxation', selfIntersections: 0 });
+    expect(entries.find((e) => e.name === "R9.3'").realization.kind).toBe('symmetric');
+    expect(entries.find((e) => e.name === 'R9.3').realization).toBeNull();
+    // A manifest without surfaces: realized, base unknown.
+    expect(entries.find((e) => e.name === 'R10.2').realization).toMatchObject({ kind: null, selfIntersections: null });
+    expect(['bouquet', '2-Octahedron', 'spine', 'relaxation'].map(baseKind)).toEqual(['symmetric', 'symmetric', 'spine', 'relaxation']);
+  });
+
+  it('filters by genus, p, q, name, realization and base kind', () => {
+    expect(query({ genus: '3' })).toEqual(['R3.1', "R3.1'"]);
+    expect(query({ genus: '2-3', p: '3' })).toEqual(['R2.1', 'R3.1']);
+    expect(query({ genus: '9..10', q: '3' })).toEqual(["R10.2'"]);
+    expect(query({ name: "r9.3'" })).toEqual(["R9.3'"]);
+    expect(query({ realized: true })).toEqual(['R2.1', 'R3.1', "R9.3'", 'R10.2']);
+    expect(query({ base: 'symmetric' })).toEqual(["R9.3'"]);
+    expect(query({ base: 'spine', genus: '3' })).toEqual([]);
+  });
+
+  it('orders by genus, |G| or name, numbers as numbers', () => {
+    expect(names(sortGallery(entries, 'name')).slice(0, 6)).toEqual(['R2.1', "R2.1'", 'R2.4', "R2.4'", 'R3.1', "R3.1'"]);
+    expect(names(sortGallery(entries, 'name')).slice(-2)).toEqual(['R10.2', "R10.2'"]);
+    expect(names(sortGallery(entries, 'order')).slice(0, 4)).toEqual(['R2.4', "R2.4'", 'R10.2', "R10.2'"]);
+    expect(query({ sort: 'genus' }).slice(-2)).toEqual(['R10.2', "R10.2'"]);
+  });
+
+  it('names what it cannot read and leaves that field out', () => {
+    const { query: q, problems } = parseGalleryQuery({ name: '<img src=x>', genus: 'three', p: '-1', q: '7', base: 'nope', sort: 'size' });
+    expect(Object.keys(problems).sort()).toEqual(['genus', 'name', 'p']);
+    expect(q).toMatchObject({ name: '', genus: null, p: null, q: 7, base: null, sort: 'genus' });
+  });
+
+  it('names thumbnails without quotes', () => {
+    expect(thumbnailFile('R3.1')).toBe('R3.1.webp');
+    expect(thumbnailFile("R3.1'")).toBe('R3.1d.webp');
+  });
+});
+
+describe('gallery links', () => {
+  it('keep the filters and drop malformed ones', () => {
+    const hash = formatHash({ ...parseHash('').state, mode: 'gallery', genus: '2-5', p: '3', realized: true, kind: 'symmetric', sort: 'order', find: "R3.1'" });
+    const { state, problems } = parseHash(hash);
+    expect(problems).toEqual([]);
+    expect(state).toMatchObject({ mode: 'gallery', genus: '2-5', p: '3', realized: true, kind: 'symmetric', sort: 'order', find: "R3.1'" });
+    const bad = parseHash('#mode=gallery&genus=2-x&kind=<b>&sort=genus&find=%3Cscript%3E');
+    expect(bad.problems).toHaveLength(4);
+    expect(bad.state).toMatchObject({ genus: null, kind: null, sort: null, find: null });
+  });
+});

@@ -1,0 +1,101 @@
+// The gallery's cards: every map of the catalog and its dual, with what the shipped realization
+// manifest (data/regmaps/realizations.json, `tessera regmap realize`) says about it, and the
+// gallery's filters and orders over them.
+import { dualRow } from './catalog-filter.js';
+
+// The kinds of surface a map is drawn on, by the base its target's regular surface is built on:
+// a symmetric base (a Platonic double cover, a bouquet), the spine, or the relaxation.
+export const BASE_KINDS = Object.freeze(['symmetric', 'spine', 'relaxation']);
+export const SORT_KEYS = Object.freeze(['genus', 'order', 'name']);
+
+/** 'symmetric', 'spine' or 'relaxation' for a surface's base name ("2-Cube", "bouquet", ...). */
+export const baseKind = (base) => (base === 'spine' || base === 'relaxation' ? base : 'symmetric');
+
+/**
+ * The cards: catalog rows (regmapCatalog's) and their duals, in the catalog's order, each with
+ * realization: null or { target, targetKind, others, base, kind, selfIntersections } (base and
+ * selfIntersections null where the manifest predates them).
+ */
+export function galleryEntries(rows, manifestMaps) {
+  const realized = new Map();
+  for (const m of manifestMaps) {
+    const base = m.surface?.base ?? null;
+    realized.set(m.source, {
+      target: m.target,
+      targetKind: m.target_kind,
+      others: m.others ?? [],
+      base,
+      kind: base === null ? null : baseKind(base),
+      selfIntersections: m.surface?.self_intersections ?? null,
+    });
+  }
+  const entries = [];
+  for (const row of rows) {
+    for (const entry of [row, dualRow(row)]) {
+      entries.push({ ...entry, realization: realized.get(entry.name) ?? null });
+    }
+  }
+  return entries;
+}
+
+/**
+ * The gallery's filter fields as typed ({ name, genus, p, q, realized, base, sort }) ->
+ * { query, problems }. query: { name (lower case text the name must contain), genus: { min, max }
+ * | null, p, q (numbers or null), realized (bool), base (a BASE_KINDS value or null), sort };
+ * problems names each field that could not be read (that field is then not used).
+ */
+export function parseGalleryQuery({ name = '', genus = '', p = '', q = '', realized = false, base = '', sort = 'genus' }) {
+  const query = { name: '', genus: null, p: null, q: null, realized: Boolean(realized), base: null, sort: 'genus' };
+  const problems = {};
+  const text = String(name).trim();
+  if (/^[A-Za-z0-9.']{0,16}$/.test(text)) query.name = text.toLowerCase();
+  else problems.name = "Name: letters, digits, dots and a prime, such as R3.1 or R3.1'.";
+  const genusMatch = /^(\d{1,4})(?:\s*(?:-|\.\.)\s*(\d{1,4}))?$/.exec(String(genus).trim());
+  if (genusMatch) query.genus = { min: Number(genusMatch[1]), max: Number(genusMatch[2] ?? genusMatch[1]) };
+  else if (String(genus).trim()) problems.genus = 'Genus: a number (3) or a range (2-10).';
+  for (const [key, value] of [['p', p], ['q', q]]) {
+    const t = String(value).trim();
+    if (/^\d{1,4}$/.test(t)) query[key] = Number(t);
+    else if (t) problems[key] = `${key}: a whole number such as 3.`;
+  }
+  if (BASE_KINDS.includes(base)) query.base = base;
+  if (SORT_KEYS.includes(sort)) query.sort = sort;
+  return { query, problems };
+}
+
+/** The entries that pass a query, in its order (stable within equal keys: catalog order). */
+export function filterGallery(entries, query) {
+  const kept = entries.filter(
+    (e) =>
+      (query.name === '' || e.name.toLowerCase().includes(query.name)) &&
+      (query.genus === null || (e.genus >= query.genus.min && e.genus <= query.genus.max)) &&
+      (query.p === null || e.p === query.p) &&
+      (query.q === null || e.q === query.q) &&
+      (!query.realized || e.realization !== null) &&
+      (query.base === null || e.realization?.kind === query.base),
+  );
+  return sortGallery(kept, query.sort);
+}
+
+/** Ordered by genus, by |G|, or by name (R2.1, R2.1', R2.2, ..., R10.1: numbers as numbers). */
+export function sortGallery(entries, key) {
+  const byName = (a, b) => compareNames(a.name, b.name);
+  const compare = {
+    genus: (a, b) => a.genus - b.genus || byName(a, b),
+    order: (a, b) => a.order - b.order || byName(a, b),
+    name: byName,
+  }[key] ?? byName;
+  return [...entries].sort(compare);
+}
+
+function compareNames(a, b) {
+  const parse = (name) => {
+    const m = /^R(\d+)\.(\d+)('?)$/.exec(name);
+    return m ? [Number(m[1]), Number(m[2]), m[3] ? 1 : 0] : [Infinity, 0, 0];
+  };
+  const [x, y] = [parse(a), parse(b)];
+  return x[0] - y[0] || x[1] - y[1] || x[2] - y[2] || (a < b ? -1 : a > b ? 1 : 0);
+}
+
+/** The thumbnail's file name for a map: R3.1 -> R3.1.webp, R3.1' -> R3.1d.webp (no quote in a URL). */
+export const thumbnailFile = (name) => `${String(name).replace(/'$/, 'd')}.webp`;

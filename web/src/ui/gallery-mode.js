@@ -1,0 +1,172 @@
+import { COMMANDS } from '../worker/protocol.js';
+import { count } from './info-panel.js';
+import { filterGallery, galleryEntries, parseGalleryQuery, thumbnailFile } from './gallery-data.js';
+import { VirtualGrid } from './virtual-grid.js';
+
+// A card's size in CSS pixels (style.css .gallery-card follows it): a 192 px thumbnail and three
+// lines of text under it.
+const CARD = Object.freeze({ cardWidth: 208, cardHeight: 292, gap: 12 });
+// The filter fields, as the panel's inputs and the link's keys name them.
+const FIELDS = Object.freeze(['find', 'genus', 'p', 'q', 'realized', 'kind', 'sort']);
+const BASE_LABELS = Object.freeze({ symmetric: 'symmetric base', spine: 'spine', relaxation: 'relaxed' });
+
+/**
+ * The Gallery mode: every map of the catalog and its dual as a card (a thumbnail of the map drawn
+ * on its surface where `npm run build:gallery` rendered one, its name, type, genus, |G| and
+ * badges), filtered and ordered by the panel's fields, each card a link to the map in the Regular
+ * maps mode. Names come from the catalog and the manifest and are shown as text only.
+ * panel: the mode's section of the side panel; grid: the element the cards scroll in; client,
+ * jobs, status; base: the URL the static build's files are under (thumbnails/); mapLink(name):
+ * the link that opens a map; onStateChange(partial state) when the filters change.
+ */
+export class GalleryMode {
+  constructor({ panel, grid, client, jobs, status, base, mapLink, onStateChange }) {
+    Object.assign(this, { panel, client, jobs, status, base, mapLink, onStateChange });
+    this.part = (role) => panel.querySelector(`[data-role=${role}]`);
+    this.entries = null;
+    this.thumbnails = new Set();
+    this.grid = new VirtualGrid(grid, {
+      ...CARD,
+      fillCard: (card, entry) => this.fillCard(card, entry),
+      keyOf: (entry) => entry.name,
+      onOpen: (entry) => {
+        location.hash = this.mapLink(entry.name);
+      },
+    });
+    for (const field of FIELDS) {
+      const input = this.input(field);
+      input.addEventListener(input.type === 'checkbox' || input.tagName === 'SELECT' ? 'change' : 'input', () => {
+        this.filter();
+        this.onStateChange(this.fieldState());
+      });
+    }
+  }
+
+  /** Reads the catalog, the realizations and the list of thumbnails, then shows the cards. */
+  async start(state) {
+    // One job at a time (Jobs cancels a running one for the next).
+    const thumbnails = this.readThumbnails();
+    const catalog = await this.request('Reading the catalog of regular maps', COMMANDS.regmapCatalog);
+    const realized = catalog && (await this.request('Reading the realized maps', COMMANDS.regmapRealizations));
+    if (!catalog || !realized) return;
+    this.entries = galleryEntries(catalog.rows, realized.maps);
+    this.thumbnails = await thumbnails;
+    await this.applyState(state);
+  }
+
+  async applyState(state) {
+    if (!this.entries) return this.start(state);
+    for (const field of FIELDS) {
+      const input = this.input(field);
+      const value = state[field];
+      if (input.type === 'checkbox') input.checked = Boolean(value);
+      else input.value = value ?? (field === 'sort' ? 'genus' : '');
+    }
+    this.filter();
+  }
+
+  filter() {
+    if (!this.entries) return;
+    const { query, problems } = parseGalleryQuery({
+      name: this.input('find').value,
+      genus: this.input('genus').value,
+      p: this.input('p').value,
+      q: this.input('q').value,
+      realized: this.input('realized').checked,
+      base: this.input('kind').value,
+      sort: this.input('sort').value,
+    });
+    for (const field of ['find', 'genus', 'p', 'q']) {
+      const key = field === 'find' ? 'name' : field;
+      this.input(field).setAttribute('aria-invalid', String(Object.hasOwn(problems, key)));
+    }
+    const shown = filterGallery(this.entries, query);
+    this.grid.setItems(shown);
+    const found = shown.length === 0 ? 'No map matches.' : `${count(shown.length)} of ${count(this.entries.length)} maps`;
+    this.part('gallery-count').textContent = [...Object.values(problems), found].join(' ');
+  }
+
+  // The filters as the link keeps them (empty fields as null, the default order as null).
+  fieldState() {
+    const text = (field) => this.input(field).value.trim() || null;
+    return {
+      find: text('find'),
+      genus: text('genus'),
+      p: text('p'),
+      q: text('q'),
+      realized: this.input('realized').checked,
+      kind: this.input('kind').value || null,
+      sort: this.input('sort').value === 'genus' ? null : this.input('sort').value,
+    };
+  }
+
+  fillCard(card, entry) {
+    const link = document.createElement('a');
+    link.className = 'gallery-card';
+    link.href = this.mapLink(entry.name);
+    const r = entry.realization;
+    link.setAttribute(
+      'aria-label',
+      `${entry.name}, type {${entry.p},${entry.q}}, genus ${entry.genus}` + (r ? `, drawn on ${r.target}` : ', not realized'),
+    );
+    link.append(this.thumbnail(entry), text('strong', entry.name), text('span', `{${entry.p},${entry.q}} · genus ${entry.genus}`));
+    link.append(text('span', `|G| ${count(entry.order)} · V ${count(entry.vertices)} E ${count(entry.edges)} F ${count(entry.faces)}`));
+    const badges = document.createElement('ul');
+    badges.className = 'badges';
+    if (r) {
+      badges.append(text('li', `on ${r.target}`));
+      if (r.kind) badges.append(text('li', BASE_LABELS[r.kind]));
+      if (r.selfIntersections === 0) badges.append(text('li', 'no self-intersections'));
+    } else {
+      badges.append(text('li', 'tiling only'));
+    }
+    link.append(badges);
+    card.replaceChildren(link);
+  }
+
+  thumbnail(entry) {
+    const file = thumbnailFile(entry.name);
+    if (!this.thumbnails.has(file)) {
+      const missing = text('span', `{${entry.p},${entry.q}}`);
+      missing.className = 'thumbnail missing';
+      missing.setAttribute('aria-hidden', 'true');
+      return missing;
+    }
+    const image = document.createElement('img');
+    image.className = 'thumbnail';
+    image.loading = 'lazy';
+    image.decoding = 'async';
+    image.width = 192;
+    image.height = 192;
+    image.alt = '';
+    image.src = `${this.base}thumbnails/${encodeURIComponent(file)}`;
+    return image;
+  }
+
+  // The thumbnails the static build holds (thumbnails/index.json, written by build:gallery); none
+  // in the dev server or a build without them.
+  async readThumbnails() {
+    try {
+      const response = await fetch(`${this.base}thumbnails/index.json`);
+      if (!response.ok) return new Set();
+      const { files } = await response.json();
+      return new Set(Array.isArray(files) ? files.filter((f) => typeof f === 'string') : []);
+    } catch {
+      return new Set();
+    }
+  }
+
+  input(field) {
+    return this.part(`gallery-${field}`);
+  }
+
+  request(label, command) {
+    return this.jobs.run(label, (onProgress) => this.client.request(command, null, { onProgress }));
+  }
+}
+
+function text(tag, content) {
+  const element = document.createElement(tag);
+  element.textContent = content;
+  return element;
+}
