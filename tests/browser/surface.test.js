@@ -7,7 +7,8 @@ import { RESULTS, test } from './harness.js';
 import { changedShare, foregroundShare, idle, mapShown, openMap, pixelShares } from './helpers.js';
 
 const surfaceFigure = (page, key) => page.locator(`[data-role=surface-figures] [data-figure=${key}]`).textContent();
-const hash = (page) => page.evaluate(() => location.hash);
+// The link without its camera (which every framing updates).
+const hash = (page) => page.evaluate(() => location.hash.replace(/&cam=[^&]*/, ''));
 const canvas = (page) => page.locator('#viewport canvas');
 const note = (page) => page.locator('#surface-note');
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { baseKind, filterGallery, galleryEntries, parseGalleryQuery, sortGallery, thumbnailFile } from '../../web/src/ui/gallery-data.js';
-import { formatHash, parseHash } from '../../web/src/ui/hash.js';
+import { cameraOf, cameraText, formatHash, parseHash } from '../../web/src/ui/hash.js';
 
 const row = (name, genus, p, q, order, vertices, edges, faces) => ({ name, genus, p, q, petrie: 2, order, vertices, edges, faces });
 const ROWS = [
@@ -80,5 +80,20 @@ describe('gallery links', () => {
     const bad = parseHash('#mode=gallery&genus=2-x&kind=<b>&sort=genus&find=%3Cscript%3E');
     expect(bad.problems).toHaveLength(4);
     expect(bad.state).toMatchObject({ genus: null, kind: null, sort: null, find: null });
+  });
+});
+
+describe('camera links', () => {
+  it('keep the camera to 1e-3 and refuse anything else', () => {
+    const view = { position: [1.5, -2, 3.125], target: [0, 0.001, -0.5] };
+    const hash = formatHash({ ...parseHash('').state, mode: 'regmap', map: 'R3.1', cam: cameraText(view), spin: true });
+    expect(hash).toBe('#mode=regmap&map=R3.1&cam=1.5_-2_3.125_0_0.001_-0.5&spin=1');
+    expect(cameraOf(parseHash(hash).state.cam)).toEqual(view);
+    for (const cam of ['1_2_3', '1_2_3_4_5_6_7', '1e3_0_0_0_0_0', 'NaN_0_0_0_0_0', '1.2345_0_0_0_0_0', '123456_0_0_0_0_0']) {
+      const { state, problems } = parseHash(`#cam=${cam}`);
+      expect(state.cam, cam).toBeNull();
+      expect(problems, cam).toHaveLength(1);
+    }
+    expect(cameraOf('<b>')).toBeNull();
   });
 });

@@ -37,6 +37,8 @@ describe('parseHash', () => {
       realized: false,
       kind: null,
       sort: null,
+      cam: null,
+      spin: false,
     });
     expect(parseHash('wireframe=0').state.wireframe).toBe(false);
   });

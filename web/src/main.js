@@ -10,7 +10,7 @@ import { createTabs } from './ui/tabs.js';
 import { QuadLayoutMode } from './ui/quad-layout-mode.js';
 import { RegularMapMode } from './ui/regmap-mode.js';
 import { GalleryMode } from './ui/gallery-mode.js';
-import { DEFAULT_STATE, formatHash, parseHash } from './ui/hash.js';
+import { DEFAULT_STATE, cameraOf, cameraText, formatHash, parseHash } from './ui/hash.js';
 import { TilingView } from './ui/tiling-view.js';
 import { DrawnView } from './ui/drawn-view.js';
 import { SurfaceView } from './ui/surface-view.js';
@@ -107,6 +107,29 @@ function showMode() {
   return mode.start(state);
 }
 
+// The camera and its turning are part of every link (the link's camera is taken by the next
+// framing, so a link reproduces the view once its surface is drawn).
+if (viewer) {
+  viewer.onViewChange = (view) => updateState({ cam: cameraText(view) });
+  viewer.setLinkedView(cameraOf(state.cam));
+  viewer.setAutoRotate(state.spin);
+}
+const spinBox = document.querySelector('#share-tools [data-role=spin]');
+spinBox.checked = state.spin;
+spinBox.disabled = !viewer;
+spinBox.addEventListener('change', () => {
+  viewer?.setAutoRotate(spinBox.checked);
+  updateState({ spin: spinBox.checked });
+});
+document.querySelector('#share-tools [data-role=copy-link]').addEventListener('click', async () => {
+  try {
+    await navigator.clipboard.writeText(location.href);
+    status.showNotice('Link copied.', 'It opens this map with this view, camera and colours.');
+  } catch {
+    status.showNotice('The browser did not let the page copy.', `The link: ${location.href}`);
+  }
+});
+
 let viewControls;
 const applyView = (settings) => {
   viewer?.setShading(settings.shading);
@@ -144,7 +167,11 @@ if (viewer) {
 }
 
 window.addEventListener('hashchange', () => {
+  const camera = state.cam;
   ({ state, problems: linkProblems } = parseHash(location.hash));
+  if (state.cam !== camera) viewer?.setLinkedView(cameraOf(state.cam));
+  viewer?.setAutoRotate(state.spin);
+  spinBox.checked = state.spin;
   viewControls?.update({ shading: state.shading, wireframe: state.wireframe });
   applyView(state);
   showMode().then(reportLinkProblems);

@@ -72,6 +72,8 @@ export class DrawnView {
       return this.showNote();
     }
     this.shown = { key, payload, name: map.name, result };
+    // Names the map on screen, for what waits for a drawing (build:gallery, the browser tests).
+    this.root.dataset.drawn = map.name;
     this.showDrawing();
     fillFigures(this.part('drawn-figures'), DRAWN_FIGURES, drawnFigureValues(result.drawn));
     this.showOthers(result.drawn.target, result.others);
@@ -121,6 +123,7 @@ export class DrawnView {
 
   clear() {
     this.shown = null;
+    delete this.root.dataset.drawn;
     if (this.active) {
       this.viewer.showColoredSurface(null);
       this.viewer.showSurfaceLines(null);

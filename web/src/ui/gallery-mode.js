@@ -3,9 +3,9 @@ import { count } from './info-panel.js';
 import { filterGallery, galleryEntries, parseGalleryQuery, thumbnailFile } from './gallery-data.js';
 import { VirtualGrid } from './virtual-grid.js';
 
-// A card's size in CSS pixels (style.css .gallery-card follows it): a 192 px thumbnail and three
-// lines of text under it.
-const CARD = Object.freeze({ cardWidth: 208, cardHeight: 292, gap: 12 });
+// A card's size in CSS pixels (style.css .gallery-card follows it): a 192 px thumbnail, three
+// lines of text and two of badges under it.
+const CARD = Object.freeze({ cardWidth: 208, cardHeight: 330, gap: 12 });
 // The filter fields, as the panel's inputs and the link's keys name them.
 const FIELDS = Object.freeze(['find', 'genus', 'p', 'q', 'realized', 'kind', 'sort']);
 const BASE_LABELS = Object.freeze({ symmetric: 'symmetric base', spine: 'spine', relaxation: 'relaxed' });

@@ -45,7 +45,22 @@ const FIELDS = Object.freeze({
   realized: flag,
   kind: oneOf(BASE_KINDS),
   sort: oneOf(SORT_KEYS.filter((key) => key !== 'genus')),
+  // The 3D view's camera: its position and target, six numbers to 1e-3 (cameraText); and whether
+  // it turns by itself.
+  cam: (text) => (CAMERA.test(text) ? text : undefined),
+  spin: flag,
 });
+
+const NUMBER = '-?\\d{1,5}(?:\\.\\d{1,3})?';
+const CAMERA = new RegExp(`^${NUMBER}(?:_${NUMBER}){5}$`);
+
+/** A camera ({ position: [x, y, z], target: [x, y, z] }) as the link keeps it, and back. */
+export const cameraText = ({ position, target }) => [...position, ...target].join('_');
+export function cameraOf(text) {
+  if (typeof text !== 'string' || !CAMERA.test(text)) return null;
+  const v = text.split('_').map(Number);
+  return { position: v.slice(0, 3), target: v.slice(3) };
+}
 
 export const DEFAULT_STATE = Object.freeze({
   mode: 'quad',
@@ -66,6 +81,8 @@ export const DEFAULT_STATE = Object.freeze({
   realized: false,
   kind: null,
   sort: null,
+  cam: null,
+  spin: false,
 });
 
 /**

@@ -56,6 +56,9 @@ export class Viewer {
 
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.requestRender());
+    this.controls.addEventListener('end', () => this.onViewChange?.(this.view()));
+    this.onViewChange = null; // (view) when the camera comes to rest where the user or a framing put it
+    this.linkedView = null; // a link's camera, taken by the next framing instead of its own
 
     this.material = new MeshStandardMaterial({
       color: SURFACE,
@@ -232,8 +235,50 @@ export class Viewer {
     this.setUvSurface(null);
   }
 
-  // Puts the camera where the bounding sphere just fits the narrower of the two view angles.
-  frame({ center, radius }) {
+  /** The camera as a link keeps it: { position: [x, y, z], target: [x, y, z] }, rounded to 1e-3. */
+  view() {
+    const rounded = (v) => [v.x, v.y, v.z].map((c) => Math.round(c * 1000) / 1000);
+    return { position: rounded(this.camera.position), target: rounded(this.controls.target) };
+  }
+
+  /**
+   * A link's camera ({ position, target } as view() gives them; null for none): applied now when
+   * the scene on screen shows something, else by the next framing in place of its own.
+   */
+  setLinkedView(view) {
+    this.linkedView = view;
+    if (view && this.scenes.get(this.shownScene).bounds) this.frame(null);
+  }
+
+  /** Turns the camera about its target by itself (true) or stops it. */
+  setAutoRotate(on) {
+    const was = this.controls.autoRotate;
+    this.controls.autoRotate = on;
+    if (on && !was) this.spin();
+  }
+
+  spin() {
+    if (!this.controls.autoRotate) return;
+    requestAnimationFrame(() => {
+      this.controls.update();
+      this.spin();
+    });
+  }
+
+  // Puts the camera where the bounding sphere just fits the narrower of the two view angles, or
+  // where a link put it (see setLinkedView).
+  frame(bounds) {
+    if (this.linkedView) {
+      const { position, target } = this.linkedView;
+      this.linkedView = null;
+      this.look({ position: new Vector3(...position), target: new Vector3(...target) });
+    } else {
+      this.fit(bounds);
+    }
+    this.onViewChange?.(this.view());
+  }
+
+  fit({ center, radius }) {
     const halfHeight = (this.camera.fov * Math.PI) / 360;
     const halfWidth = Math.atan(Math.tan(halfHeight) * this.camera.aspect);
     const distance = (radius || 1) / Math.sin(Math.min(halfHeight, halfWidth));

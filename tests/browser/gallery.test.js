@@ -1,0 +1,72 @@
+// The Gallery mode and the links it hands out: the cards, the filters, a map opened from its card,
+// its permalink (camera included) reproducing the view in a fresh browser context.
+import assert from 'node:assert/strict';
+import { RESULTS, test } from './harness.js';
+import { changedShare, foregroundShare, idle } from './helpers.js';
+
+const cards = (page) => page.locator('#gallery .gallery-card');
+
+async function drawn(page, name) {
+  await page.waitForFunction((map) => document.querySelector('[data-role=drawn-view]')?.dataset.drawn === map, name, {
+    timeout: 60_000,
+  });
+  await idle(page);
+  await page.waitForTimeout(300); // the frame after the last render request
+}
+
+test('Gallery: every map as a card, filtered to genus 3, R3.1 opened from its card', async ({ page, url }) => {
+  const start = Date.now();
+  await page.goto(`${url}#mode=gallery`);
+  await cards(page).first().waitFor();
+  console.log(`    gallery's first cards after ${Date.now() - start} ms`);
+  assert.match(await page.locator('[data-role=gallery-count]').textContent(), /^6,756 of 6,756 maps$/);
+  // Only the rows in view are in the page.
+  assert.ok((await cards(page).count()) < 200, 'the grid is virtualized');
+
+  await page.locator('[data-role=gallery-genus]').fill('3');
+  await page.locator('[data-role=gallery-realized]').check();
+  const counted = await page.locator('[data-role=gallery-count]').textContent();
+  const [, shown] = /^(\d+) of/.exec(counted);
+  assert.ok(Number(shown) >= 10, counted);
+  for (const label of await cards(page).evaluateAll((links) => links.map((a) => a.getAttribute('aria-label')))) {
+    assert.match(label, /genus 3, drawn on /);
+  }
+  assert.match(await page.evaluate(() => location.hash), /genus=3&realized=1/);
+  await page.screenshot({ path: `${RESULTS}/gallery-genus-3.png` });
+
+  await page.getByRole('link', { name: /^R3\.1, type/ }).click();
+  await drawn(page, 'R3.1');
+  assert.match(await page.evaluate(() => location.hash), /mode=regmap&map=R3\.1/);
+  assert.ok((await foregroundShare(page)) > 0.05, 'the canvas shows the drawn map');
+});
+
+test('Gallery: a copied permalink reproduces the view, camera included, in a fresh context', async ({ page, url, context }) => {
+  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: url });
+  await page.goto(`${url}#mode=regmap&map=R9.3'`);
+  await drawn(page, "R9.3'");
+  // Turn the camera by a drag, as a user would.
+  const box = await page.locator('#viewport canvas').boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 140, box.y + box.height / 2 + 60, { steps: 8 });
+  await page.mouse.up();
+  await page.waitForTimeout(300);
+  const before = await page.locator('#viewport canvas').screenshot();
+  await page.locator('[data-role=copy-link]').click();
+  const link = await page.evaluate(() => navigator.clipboard.readText());
+  assert.match(link, /#mode=regmap&map=R9\.3%27&cam=(-?[\d.]+_){5}-?[\d.]+$/);
+
+  const fresh = await context.browser().newContext({ viewport: { width: 1280, height: 800 } });
+  try {
+    const other = await fresh.newPage();
+    await other.goto(link);
+    await drawn(other, "R9.3'");
+    const after = await other.locator('#viewport canvas').screenshot();
+    await other.screenshot({ path: `${RESULTS}/gallery-permalink.png` });
+    const share = await changedShare(page, before, after);
+    console.log(`    permalink: ${(share * 100).toFixed(2)} % of the pixels differ`);
+    assert.ok(share < 0.01, `the linked view differs in ${(share * 100).toFixed(2)} % of its pixels`);
+  } finally {
+    await fresh.close();
+  }
+});
