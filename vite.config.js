@@ -1,13 +1,22 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
+import { serviceWorker } from './scripts/service-worker-plugin.js';
 
 const projectRoot = fileURLToPath(new URL('.', import.meta.url));
 
 export default defineConfig({
   root: 'web',
+  // Relative URLs: the static build works from any static host under any path.
+  base: './',
   // three.js alone is about 600 kB minified; the page loads it once.
   build: { outDir: 'dist', emptyOutDir: true, target: 'es2022', chunkSizeWarningLimit: 900 },
   worker: { format: 'es' },
+  plugins: [
+    serviceWorker({
+      source: fileURLToPath(new URL('web/src/offline/service-worker.js', import.meta.url)),
+      publicDir: fileURLToPath(new URL('web/public', import.meta.url)),
+    }),
+  ],
   server: { port: 5173, strictPort: true },
   preview: { port: 4173, strictPort: true },
   test: { root: projectRoot, include: ['tests/web/**/*.test.js'] },

@@ -70,3 +70,29 @@ test('Gallery: a copied permalink reproduces the view, camera included, in a fre
     await fresh.close();
   }
 });
+
+test('Offline: after one visit the built site reloads and opens another map with the network off', async ({ context, url }) => {
+  const online = await context.browser().newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'allow' });
+  try {
+    const page = await online.newPage();
+    await page.goto(`${url}#mode=regmap&map=R3.1`);
+    await drawn(page, 'R3.1');
+    await page.waitForFunction(() => navigator.serviceWorker.controller !== null, null, { timeout: 30_000 });
+    await page.evaluate(() => navigator.serviceWorker.ready);
+    await online.setOffline(true);
+    await page.reload();
+    await drawn(page, 'R3.1');
+    await page.evaluate(() => {
+      location.hash = '#mode=regmap&map=R13.2%27';
+    });
+    await drawn(page, "R13.2'");
+    assert.ok((await foregroundShare(page)) > 0.05, 'the canvas shows the drawn map offline');
+    await page.evaluate(() => {
+      location.hash = '#mode=gallery&genus=3';
+    });
+    await cards(page).first().waitFor();
+    await page.screenshot({ path: `${RESULTS}/offline-gallery.png` });
+  } finally {
+    await online.close();
+  }
+});

@@ -65,7 +65,9 @@ function withTimeout(promise, ms, what) {
 }
 
 async function runOne(browser, url, { name, fn }) {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
+  // The static build's service worker would answer requests that a test routes (a core that cannot
+  // be loaded): blocked here, allowed in the offline test's own context.
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true, serviceWorkers: 'block' });
   const page = await context.newPage();
   const pageErrors = [];
   page.on('pageerror', (error) => pageErrors.push(error.message));

@@ -175,6 +175,16 @@ window.addEventListener('hashchange', () => {
   viewControls?.update({ shading: state.shading, wireframe: state.wireframe });
   applyView(state);
   showMode().then(reportLinkProblems);
+
+// The static build works offline after the first visit (web/src/offline/service-worker.js).
+if (import.meta.env.PROD && 'serviceWorker' in navigator) {
+  navigator.serviceWorker.register('./sw.js').catch(() => {});
+}
 });
 
 showMode().then(reportLinkProblems);
+
+// The static build works offline after the first visit (web/src/offline/service-worker.js).
+if (import.meta.env.PROD && 'serviceWorker' in navigator) {
+  navigator.serviceWorker.register('./sw.js').catch(() => {});
+}

@@ -112,7 +112,10 @@ export class VirtualGrid {
     }
     const column = index % this.columns;
     const row = Math.floor(index / this.columns);
-    card.style.left = `${column * (this.cardWidth + this.gap)}px`;
+    // The columns centred in the grid's width.
+    const spare = this.root.clientWidth - (this.columns * (this.cardWidth + this.gap) - this.gap);
+    const left = Math.max(0, Math.floor(spare / 2));
+    card.style.left = `${left + column * (this.cardWidth + this.gap)}px`;
     card.style.top = `${row * this.rowHeight}px`;
     card.style.width = `${this.cardWidth}px`;
     card.style.height = `${this.cardHeight}px`;

@@ -18,8 +18,9 @@ import {
 } from './stages.js';
 
 // The wasm build is a static file (web/public/wasm), not a source module: an absolute URL keeps
-// Vite's dev server from treating the import as one of its own.
-const CORE_URL = new URL(`${import.meta.env.BASE_URL}wasm/tessera.mjs`, self.location.href).href;
+// Vite's dev server from treating the import as one of its own. The static build has relative
+// URLs (it is hosted under any path): there this worker is a file in assets/, beside wasm/.
+const CORE_URL = new URL(import.meta.env.DEV ? '/wasm/tessera.mjs' : '../wasm/tessera.mjs', self.location.href).href;
 
 let core = null; // Promise of the wasm module, created on first use, dropped after a trap
 const catalogs = new WeakMap(); // wasm module -> its catalog rows, read into it once
