@@ -155,9 +155,9 @@ constexpr const char* kRealizeHelp =
     "ranked target is kept with its pairing, the others that work are listed. A target whose\n"
     "regular surface crosses itself gives way to the next that does not (each chosen surface is\n"
     "built and searched for crossings once). Prints the counts; -o writes the manifest\n"
-    "{version, genus, maps: [{source, genus, target, target_kind, score, others, surface: {base,\n"
-    "self_intersections}, pairing}], unrealized: [names]} that the page reads instead of "
-    "searching.\n"
+    "{version, counts, maps: [{source, genus, p, q, order, V, E, F, target, target_kind, score,\n"
+    "others, surface: {base, self_intersections}, pairing}], unrealized: [{source, genus, p, q,\n"
+    "order, V, E, F}]} that the page reads instead of searching, and the gallery its cards from.\n"
     "  --genus G..H    the genus range (default 2..101)\n"
     "  --max-steps N   work limit of each pairing search (default 2000000)\n"
     "  --radius R      rotation pairings: corners within this hyperbolic distance (default 4.5)\n"
@@ -543,6 +543,12 @@ std::pair<int, int> parse_genus_range(const std::string& text) {
   return {lo, hi};
 }
 
+// A map as the manifest names it: source, genus, p, q, |Aut| and V, E, F (the gallery's cards).
+Json map_figures(const regmap::CatalogEntry& entry) {
+  return {{"source", entry.name}, {"genus", entry.genus}, {"p", entry.p},     {"q", entry.q},
+          {"order", entry.order}, {"V", entry.vertices},  {"E", entry.edges}, {"F", entry.faces}};
+}
+
 int realize(const Args& args) {
   if (wants_help(args)) {
     std::fputs(kRealizeHelp, stdout);
@@ -581,7 +587,7 @@ int realize(const Args& args) {
         regmap::RealizationSearch search =
             regmap::find_realizations(group, words, entry.genus, targets, pairing_limits, groups);
         if (search.found.empty()) {
-          unrealized.push_back(entry.name);
+          unrealized.push_back(map_figures(entry));
           continue;
         }
         regmap::prefer_crossing_free(search, surfaces, groups);
@@ -590,23 +596,23 @@ int realize(const Args& args) {
         Json others = Json::array();
         for (std::size_t k = 1; k < search.found.size(); ++k)
           others.push_back(search.found[k].target.name);
-        maps.push_back(
-            {{"source", entry.name},
-             {"genus", entry.genus},
-             {"target", best.target.name},
-             {"target_kind", regmap::to_string(best.target.kind)},
-             {"score", best.score},
-             {"others", others},
-             {"surface",
-              {{"base", surface.base}, {"self_intersections", surface.self_intersections}}},
-             {"pairing", regmap::pairing_json(best.pairing)}});
+        Json realized = map_figures(entry);
+        realized.update(
+            Json{{"target", best.target.name},
+                 {"target_kind", regmap::to_string(best.target.kind)},
+                 {"score", best.score},
+                 {"others", others},
+                 {"surface",
+                  {{"base", surface.base}, {"self_intersections", surface.self_intersections}}},
+                 {"pairing", regmap::pairing_json(best.pairing)}});
+        maps.push_back(std::move(realized));
         if (best.target.kind != regmap::TargetKind::Hosohedron) ++non_hosohedral;
         if (surface.self_intersections == 0) ++crossing_free;
         if (best.pairing.kind == regmap::PairingKind::Reflections) ++by_reflections;
         highest = std::max(highest, entry.genus);
       } catch (const Error& e) {
         ++errors;
-        unrealized.push_back(entry.name);
+        unrealized.push_back(map_figures(entry));
         std::fprintf(stderr, "tessera: %s: %s\n", entry.name.c_str(), e.what());
       }
       if (sources % 100 == 0)
@@ -626,7 +632,7 @@ int realize(const Args& args) {
                        {"highest_genus", highest},
                        {"seconds", seconds}};
   if (!output.empty()) {
-    const Json manifest = {{"version", 1},
+    const Json manifest = {{"version", 2},
                            {"generated_by", "tessera regmap realize"},
                            {"counts", counts},
                            {"maps", maps},

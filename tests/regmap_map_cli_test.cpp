@@ -102,6 +102,19 @@ TEST(RegmapRealizeCli, CountsAndManifestOfGenusThree) {
   }
   EXPECT_TRUE(klein);
   EXPECT_EQ(counts["self_intersection_free"], counts["realized"]);
+  // Every map of the range is in the manifest with its figures, realized or not (the gallery's
+  // cards): R3.1' (dual: V and F swapped) among them.
+  EXPECT_EQ(manifest["maps"].size() + manifest["unrealized"].size(),
+            counts["maps"].get<std::size_t>());
+  bool dual = false;
+  for (const auto& list : {manifest["maps"], manifest["unrealized"]}) {
+    for (const auto& m : list) {
+      EXPECT_EQ(m["genus"], 3);
+      EXPECT_EQ(m["order"].get<int>(), 4 * m["E"].get<int>());
+      if (m["source"] == "R3.1'") dual = m["p"] == 7 && m["q"] == 3 && m["V"] == 56 && m["F"] == 24;
+    }
+  }
+  EXPECT_TRUE(dual);
   for (const char* args : {"regmap realize --genus 1", "regmap realize --genus 5..3",
                            "regmap realize --genus x", "regmap realize R3.1"}) {
     const auto bad = run_cli(args, true);

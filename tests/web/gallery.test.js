@@ -2,22 +2,28 @@ import { describe, expect, it } from 'vitest';
 import { baseKind, filterGallery, galleryEntries, parseGalleryQuery, sortGallery, thumbnailFile } from '../../web/src/ui/gallery-data.js';
 import { cameraOf, cameraText, formatHash, parseHash } from '../../web/src/ui/hash.js';
 
-const row = (name, genus, p, q, order, vertices, edges, faces) => ({ name, genus, p, q, petrie: 2, order, vertices, edges, faces });
-const ROWS = [
-  row('R2.1', 2, 3, 8, 96, 6, 24, 16),
-  row('R2.4', 2, 5, 10, 20, 1, 5, 2),
-  row('R3.1', 3, 3, 7, 336, 24, 84, 56),
-  row('R10.2', 10, 3, 4, 48, 4, 6, 4),
-  row('R9.3', 9, 4, 6, 240, 40, 80, 30),
-];
-// Manifest entries as `tessera regmap realize` writes them (the pairing left out).
-const MANIFEST = [
-  { source: 'R3.1', target: 'Tetrahedron', target_kind: 'platonic', others: [], surface: { base: 'relaxation', self_intersections: 0 } },
-  { source: "R9.3'", target: "R2.1'", target_kind: 'catalog', others: ['{2,10}'], surface: { base: '2-Cube', self_intersections: 0 } },
-  { source: 'R2.1', target: '{6,3}_(1,0)', target_kind: 'torus', others: [], surface: { base: 'spine', self_intersections: 3 } },
-  { source: 'R10.2', target: '{2,11}', target_kind: 'hosohedron', others: [] },
-];
-const entries = galleryEntries(ROWS, MANIFEST);
+// A manifest as `tessera regmap realize` writes it (pairings left out): realized maps with their
+// targets, the others with their figures only.
+const fig = (source, genus, p, q, order, V, E, F) => ({ source, genus, p, q, order, V, E, F });
+const MANIFEST = {
+  version: 2,
+  maps: [
+    { ...fig('R3.1', 3, 3, 7, 336, 24, 84, 56), target: 'Tetrahedron', target_kind: 'platonic', others: [], surface: { base: 'relaxation', self_intersections: 0 } },
+    { ...fig("R9.3'", 9, 6, 4, 240, 30, 80, 40), target: "R2.1'", target_kind: 'catalog', others: ['{2,10}'], surface: { base: '2-Cube', self_intersections: 0 } },
+    { ...fig('R2.1', 2, 3, 8, 96, 6, 24, 16), target: '{6,3}_(1,0)', target_kind: 'torus', others: [], surface: { base: 'spine', self_intersections: 3 } },
+    { ...fig('R10.2', 10, 3, 4, 48, 4, 6, 4), target: '{2,11}', target_kind: 'hosohedron', others: [] },
+  ],
+  unrealized: [
+    fig("R2.1'", 2, 8, 3, 96, 16, 24, 6),
+    fig('R2.4', 2, 5, 10, 20, 1, 5, 2),
+    fig("R2.4'", 2, 10, 5, 20, 2, 5, 1),
+    fig("R3.1'", 3, 7, 3, 336, 56, 84, 24),
+    fig("R10.2'", 10, 4, 3, 48, 4, 6, 4),
+    fig('R9.3', 9, 4, 6, 240, 40, 80, 30),
+    { source: '<b>broken</b>', genus: 'x' },
+  ],
+};
+const entries = galleryEntries(MANIFEST);
 const names = (list) => list.map((e) => e.name);
 const query = (fields) => {
   const { query: q, problems } = parseGalleryQuery(fields);
@@ -26,10 +32,11 @@ const query = (fields) => {
 };
 
 describe('gallery cards', () => {
-  it('has every map and its dual, with the dual figures swapped', () => {
-    expect(entries).toHaveLength(2 * ROWS.length);
+  it('has every map of the manifest, realized or not, and drops malformed entries', () => {
+    expect(entries).toHaveLength(10);
     const dual = entries.find((e) => e.name === "R2.1'");
-    expect([dual.p, dual.q, dual.vertices, dual.faces]).toEqual([8, 3, 16, 6]);
+    expect([dual.p, dual.q, dual.order, dual.vertices, dual.edges, dual.faces]).toEqual([8, 3, 96, 16, 24, 6]);
+    expect(dual.realization).toBeNull();
   });
 
   it('joins the realizations by name, with the kind of their base', () => {

@@ -9,7 +9,7 @@ import { createViewControls } from './ui/view-controls.js';
 import { createTabs } from './ui/tabs.js';
 import { QuadLayoutMode } from './ui/quad-layout-mode.js';
 import { RegularMapMode } from './ui/regmap-mode.js';
-import { GalleryMode } from './ui/gallery-mode.js';
+import { GalleryMode, readManifest } from './ui/gallery-mode.js';
 import { DEFAULT_STATE, cameraOf, cameraText, formatHash, parseHash } from './ui/hash.js';
 import { TilingView } from './ui/tiling-view.js';
 import { DrawnView } from './ui/drawn-view.js';
@@ -25,6 +25,7 @@ const jobs = new Jobs(client, status);
 window.addEventListener('unhandledrejection', (event) => status.showError(event.reason));
 
 let { state, problems: linkProblems } = parseHash(location.hash);
+if (state.mode === 'gallery') readManifest();
 const reportLinkProblems = () => {
   if (linkProblems.length > 0) status.showNotice('Parts of the link were ignored.', linkProblems.join(' '));
 };
@@ -79,8 +80,6 @@ const modes = {
   gallery: new GalleryMode({
     panel: byId('gallery-panel'),
     grid: byId('gallery'),
-    client,
-    jobs,
     status,
     base: import.meta.env.BASE_URL,
     mapLink: (map) => formatHash({ ...DEFAULT_STATE, mode: 'regmap', map }),

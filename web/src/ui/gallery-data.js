@@ -1,7 +1,6 @@
 // The gallery's cards: every map of the catalog and its dual, with what the shipped realization
 // manifest (data/regmaps/realizations.json, `tessera regmap realize`) says about it, and the
 // gallery's filters and orders over them.
-import { dualRow } from './catalog-filter.js';
 
 // The kinds of surface a map is drawn on, by the base its target's regular surface is built on:
 // a symmetric base (a Platonic double cover, a bouquet), the spine, or the relaxation.
@@ -12,30 +11,36 @@ export const SORT_KEYS = Object.freeze(['genus', 'order', 'name']);
 export const baseKind = (base) => (base === 'spine' || base === 'relaxation' ? base : 'symmetric');
 
 /**
- * The cards: catalog rows (regmapCatalog's) and their duals, in the catalog's order, each with
- * realization: null or { target, targetKind, others, base, kind, selfIntersections } (base and
- * selfIntersections null where the manifest predates them).
+ * The cards, from the manifest (`tessera regmap realize`: maps realized, with their targets, and
+ * unrealized, each with source, genus, p, q, order, V, E, F): { name, genus, p, q, order, vertices,
+ * edges, faces, realization }, realization null or { target, targetKind, others, base, kind,
+ * selfIntersections } (base and selfIntersections null where the manifest predates them).
  */
-export function galleryEntries(rows, manifestMaps) {
-  const realized = new Map();
-  for (const m of manifestMaps) {
+export function galleryEntries(manifest) {
+  const card = (m, realization) => ({
+    name: m.source,
+    genus: m.genus,
+    p: m.p,
+    q: m.q,
+    order: m.order,
+    vertices: m.V,
+    edges: m.E,
+    faces: m.F,
+    realization,
+  });
+  const realized = (m) => {
     const base = m.surface?.base ?? null;
-    realized.set(m.source, {
+    return {
       target: m.target,
       targetKind: m.target_kind,
       others: m.others ?? [],
       base,
       kind: base === null ? null : baseKind(base),
       selfIntersections: m.surface?.self_intersections ?? null,
-    });
-  }
-  const entries = [];
-  for (const row of rows) {
-    for (const entry of [row, dualRow(row)]) {
-      entries.push({ ...entry, realization: realized.get(entry.name) ?? null });
-    }
-  }
-  return entries;
+    };
+  };
+  const cards = [...(manifest.maps ?? []).map((m) => card(m, realized(m))), ...(manifest.unrealized ?? []).map((m) => card(m, null))];
+  return cards.filter((c) => typeof c.name === 'string' && Number.isInteger(c.genus) && Number.isInteger(c.p) && Number.isInteger(c.q));
 }
 
 /**

@@ -1,4 +1,3 @@
-import { COMMANDS } from '../worker/protocol.js';
 import { count } from './info-panel.js';
 import { filterGallery, galleryEntries, parseGalleryQuery, thumbnailFile } from './gallery-data.js';
 import { VirtualGrid } from './virtual-grid.js';
@@ -15,13 +14,13 @@ const BASE_LABELS = Object.freeze({ symmetric: 'symmetric base', spine: 'spine',
  * on its surface where `npm run build:gallery` rendered one, its name, type, genus, |G| and
  * badges), filtered and ordered by the panel's fields, each card a link to the map in the Regular
  * maps mode. Names come from the catalog and the manifest and are shown as text only.
- * panel: the mode's section of the side panel; grid: the element the cards scroll in; client,
- * jobs, status; base: the URL the static build's files are under (thumbnails/); mapLink(name):
+ * panel: the mode's section of the side panel; grid: the element the cards scroll in; status;
+ * base: the URL the static build's files are under (thumbnails/); mapLink(name):
  * the link that opens a map; onStateChange(partial state) when the filters change.
  */
 export class GalleryMode {
-  constructor({ panel, grid, client, jobs, status, base, mapLink, onStateChange }) {
-    Object.assign(this, { panel, client, jobs, status, base, mapLink, onStateChange });
+  constructor({ panel, grid, status, base, mapLink, onStateChange }) {
+    Object.assign(this, { panel, status, base, mapLink, onStateChange });
     this.part = (role) => panel.querySelector(`[data-role=${role}]`);
     this.entries = null;
     this.thumbnails = new Set();
@@ -42,15 +41,19 @@ export class GalleryMode {
     }
   }
 
-  /** Reads the catalog, the realizations and the list of thumbnails, then shows the cards. */
+  /**
+   * Reads the manifest (a chunk of its own, the same file the worker draws from; no core needed,
+   * so that the cards are on screen at once) and the list of thumbnails, then shows the cards.
+   */
   async start(state) {
-    // One job at a time (Jobs cancels a running one for the next).
-    const thumbnails = this.readThumbnails();
-    const catalog = await this.request('Reading the catalog of regular maps', COMMANDS.regmapCatalog);
-    const realized = catalog && (await this.request('Reading the realized maps', COMMANDS.regmapRealizations));
-    if (!catalog || !realized) return;
-    this.entries = galleryEntries(catalog.rows, realized.maps);
-    this.thumbnails = await thumbnails;
+    try {
+      const [{ default: text }, thumbnails] = await Promise.all([readManifest(), this.readThumbnails()]);
+      this.entries = galleryEntries(JSON.parse(text));
+      this.thumbnails = thumbnails;
+    } catch (error) {
+      this.status.showError({ kind: 'internal', message: `The gallery's list of maps could not be read (${error.message}). Reload the page.` });
+      return;
+    }
     await this.applyState(state);
   }
 
@@ -160,9 +163,16 @@ export class GalleryMode {
     return this.part(`gallery-${field}`);
   }
 
-  request(label, command) {
-    return this.jobs.run(label, (onProgress) => this.client.request(command, null, { onProgress }));
-  }
+}
+
+let manifest = null;
+/**
+ * The manifest's chunk, fetched once; the page calls it first thing when it opens on the gallery,
+ * so that the fetch runs while the rest of the page starts.
+ */
+export function readManifest() {
+  manifest ??= import('../../../data/regmaps/realizations.json?raw');
+  return manifest;
 }
 
 function text(tag, content) {

@@ -60,9 +60,6 @@ export const COMMANDS = Object.freeze({
   // coloured by quarter tube; edges: the map's edges (Float32Array, 6 per segment).
   regmapDrawn: 'regmapDrawn', // payload: { map, on } -> { info, drawn, others, surface, bare, edges }
   regmapDrawnGlb: 'regmapDrawnGlb', // payload: { map, on } -> { bytes }
-  // The shipped manifest's realizations without their pairings, for the gallery's cards: source,
-  // target, target_kind, others and surface { base, self_intersections } of every realized map.
-  regmapRealizations: 'regmapRealizations', // payload: none -> { maps: [...] }
 });
 
 /** Error kinds that the page adds to the core's. */

@@ -143,11 +143,6 @@ const handlers = {
     return { rows: await catalogOf(module) };
   },
 
-  async [COMMANDS.regmapRealizations]() {
-    const maps = [...(await realizations()).values()];
-    return { maps: maps.map(({ pairing, ...summary }) => summary) };
-  },
-
   async [COMMANDS.regmapTiling]({ map }, progress) {
     progress('Starting the geometry core', 0);
     const module = await loadCore();
