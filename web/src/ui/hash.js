@@ -45,13 +45,13 @@ const FIELDS = Object.freeze({
   realized: flag,
   kind: oneOf(BASE_KINDS),
   sort: oneOf(SORT_KEYS.filter((key) => key !== 'genus')),
-  // The 3D view's camera: its position and target, six numbers to 1e-3 (cameraText); and whether
+  // The 3D view's camera: its position and target, six numbers to 1e-4 (cameraText); and whether
   // it turns by itself.
   cam: (text) => (CAMERA.test(text) ? text : undefined),
   spin: flag,
 });
 
-const NUMBER = '-?\\d{1,5}(?:\\.\\d{1,3})?';
+const NUMBER = '-?\\d{1,5}(?:\\.\\d{1,4})?';
 const CAMERA = new RegExp(`^${NUMBER}(?:_${NUMBER}){5}$`);
 
 /** A camera ({ position: [x, y, z], target: [x, y, z] }) as the link keeps it, and back. */

@@ -235,9 +235,9 @@ export class Viewer {
     this.setUvSurface(null);
   }
 
-  /** The camera as a link keeps it: { position: [x, y, z], target: [x, y, z] }, rounded to 1e-3. */
+  /** The camera as a link keeps it: { position: [x, y, z], target: [x, y, z] }, rounded to 1e-4. */
   view() {
-    const rounded = (v) => [v.x, v.y, v.z].map((c) => Math.round(c * 1000) / 1000);
+    const rounded = (v) => [v.x, v.y, v.z].map((c) => Math.round(c * 10000) / 10000);
     return { position: rounded(this.camera.position), target: rounded(this.controls.target) };
   }
 
