@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { baseKind, filterGallery, galleryEntries, parseGalleryQuery, sortGallery, thumbnailFile } from '../../web/src/ui/gallery-data.js';
 import { cameraOf, cameraText, formatHash, parseHash } from '../../web/src/ui/hash.js';
+import { drawnDescription } from '../../web/src/ui/drawn-figures.js';
 
 // A manifest as `tessera regmap realize` writes it (pairings left out): realized maps with their
 // targets, the others with their figures only.
@@ -102,5 +103,16 @@ describe('camera links', () => {
       expect(problems, cam).toHaveLength(1);
     }
     expect(cameraOf('<b>')).toBeNull();
+  });
+});
+
+describe('the drawn view in words', () => {
+  it('says what p, q and the genus are and what is drawn, with the map figures', () => {
+    const drawn = { target: 'Tetrahedron', target_kind: 'platonic', genus: 3, pairing: { kind: 'rotations' }, expected: { V: 24, E: 84, F: 56 } };
+    const [map, drawing] = drawnDescription('R3.1', { p: 3, q: 7 }, drawn);
+    expect(map).toMatch(/^R3\.1 is a regular map of type \{3,7\}: 56 triangular faces \(p = 3 sides each\), 7 of them around each of its 24 vertices \(q = 7\), joined by 84 edges, on a closed surface of genus 3 \(a sphere with 3 handles\)/);
+    expect(drawing).toMatch(/regular surface of Tetrahedron .* rotations of R3\.1: each of the 56 faces .* the 84 edges/);
+    const [one] = drawnDescription('R2.4', { p: 5, q: 10 }, { ...drawn, genus: 2, expected: { V: 1, E: 5, F: 2 } });
+    expect(one).toMatch(/2 pentagonal faces .* its 1 vertex .* 5 edges/);
   });
 });

@@ -33,3 +33,27 @@ export function drawnFigureValues(drawn) {
     F: found('F'),
   };
 }
+
+const polygon = (p) => ({ 1: 'one-sided', 2: 'two-sided', 3: 'triangular', 4: 'square', 5: 'pentagonal', 6: 'hexagonal' })[p] ?? `${p}-sided`;
+const plural = (n, one, many) => `${count(n)} ${n === 1 ? one : many}`;
+
+/**
+ * What the drawn view shows, in words, from the map's name and the core's figures of the drawing
+ * (drawn: target, target_kind, genus, pairing, expected { V, E, F }) and the map's type (p, q):
+ * what p, q and the genus mean, and what is drawn. Plain text (the page shows it as text).
+ */
+export function drawnDescription(name, { p, q }, drawn) {
+  const { V, E, F } = drawn.expected;
+  const genus = drawn.genus;
+  const handles = genus === 1 ? 'a torus' : `a sphere with ${count(genus)} handles`;
+  const paired = drawn.pairing.kind === 'reflections' ? "its mirror symmetries" : 'its rotations';
+  return [
+    `${name} is a regular map of type {${p},${q}}: ${plural(F, `${polygon(p)} face`, `${polygon(p)} faces`)} (p = ${p} sides each), ` +
+      `${q} of them around each of its ${plural(V, 'vertex', 'vertices')} (q = ${q}), joined by ${plural(E, 'edge', 'edges')}, ` +
+      `on a closed surface of genus ${count(genus)} (${handles}). Regular: a symmetry of the map takes any face, any edge of it and either ` +
+      `end of that edge to any other.`,
+    `Here it is drawn on the regular surface of ${drawn.target} (that map's edges as tubes, its vertices as junctions), which has the same ` +
+      `genus and whose symmetries are ${paired} of ${name}: each of the ${count(F)} faces is a region of one colour, the ${count(E)} edges are ` +
+      'the dark curves, and the surface\'s symmetries move the drawing onto itself.',
+  ];
+}

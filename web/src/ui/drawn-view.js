@@ -1,7 +1,7 @@
 import { COMMANDS } from '../worker/protocol.js';
 import { downloadBytes, downloadName } from './download.js';
 import { fillFigures } from './info-panel.js';
-import { DRAWN_FIGURES, drawnFigureValues } from './drawn-figures.js';
+import { DRAWN_FIGURES, drawnDescription, drawnFigureValues } from './drawn-figures.js';
 
 // The colour of the map's edges over its faces: dark, thin.
 const EDGE_COLOR = 0x1d1d1f;
@@ -76,6 +76,13 @@ export class DrawnView {
     this.root.dataset.drawn = map.name;
     this.showDrawing();
     fillFigures(this.part('drawn-figures'), DRAWN_FIGURES, drawnFigureValues(result.drawn));
+    this.part('drawn-text').replaceChildren(
+      ...drawnDescription(map.name, result.info, result.drawn).map((paragraph) => {
+        const element = document.createElement('p');
+        element.textContent = paragraph;
+        return element;
+      }),
+    );
     this.showOthers(result.drawn.target, result.others);
     this.part('drawn-result').hidden = false;
     this.showNote();

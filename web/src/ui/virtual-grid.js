@@ -1,7 +1,7 @@
 // A grid of cards that draws only the rows in view, so that thousands of cards scroll as fast as
 // ten. Cards have one fixed size; as many columns as fit the grid's width; the grid scrolls inside
 // its own element. Arrow keys move between cards, Enter opens the one the keyboard is on.
-import { visibleRange } from './virtual-list.js';
+import { oncePerFrame, scrollToBand, visibleRange } from './virtual-list.js';
 
 /**
  * root: the element to turn into the grid (it gets the scroll and the keys); cardWidth and
@@ -15,7 +15,7 @@ export class VirtualGrid {
     this.items = [];
     this.columns = 1;
     this.active = -1;
-    this.drawPending = false;
+    this.requestDraw = oncePerFrame(() => this.draw());
     this.drawn = new Map(); // key -> card element, reused while it stays in view
     root.setAttribute('role', 'grid');
     root.tabIndex = 0;
@@ -66,19 +66,8 @@ export class VirtualGrid {
     if (index < 0 || index >= this.items.length) return;
     this.active = index;
     const top = Math.floor(index / this.columns) * this.rowHeight;
-    const bottom = top + this.rowHeight;
-    if (top < this.root.scrollTop) this.root.scrollTop = top;
-    else if (bottom > this.root.scrollTop + this.root.clientHeight) this.root.scrollTop = bottom - this.root.clientHeight;
+    scrollToBand(this.root, top, top + this.rowHeight);
     this.draw();
-  }
-
-  requestDraw() {
-    if (this.drawPending) return;
-    this.drawPending = true;
-    requestAnimationFrame(() => {
-      this.drawPending = false;
-      this.draw();
-    });
   }
 
   draw() {

@@ -10,6 +10,25 @@ export function visibleRange(scrollTop, viewHeight, rowHeight, count) {
   return { first, last: Math.max(first, last) };
 }
 
+/** Scrolls `root` just enough that the band [top, bottom) of its content is in view. */
+export function scrollToBand(root, top, bottom) {
+  if (top < root.scrollTop) root.scrollTop = top;
+  else if (bottom > root.scrollTop + root.clientHeight) root.scrollTop = bottom - root.clientHeight;
+}
+
+/** fn, called at most once per animation frame however often the returned function is. */
+export function oncePerFrame(fn) {
+  let pending = false;
+  return () => {
+    if (pending) return;
+    pending = true;
+    requestAnimationFrame(() => {
+      pending = false;
+      fn();
+    });
+  };
+}
+
 /**
  * root: an element with an id, to turn into the listbox (it gets the scroll, role and keys);
  * rowHeight in CSS pixels; fillRow(element, item) writes an item into a row as text;
@@ -21,7 +40,7 @@ export class VirtualList {
     this.items = [];
     this.active = -1; // the row the keyboard is on
     this.chosenKey = null;
-    this.drawPending = false;
+    this.requestDraw = oncePerFrame(() => this.draw());
     root.setAttribute('role', 'listbox');
     root.tabIndex = 0;
     this.spacer = document.createElement('div');
@@ -87,19 +106,8 @@ export class VirtualList {
     if (index < 0 || index >= this.items.length) return;
     this.active = index;
     const top = index * this.rowHeight;
-    const bottom = top + this.rowHeight;
-    if (top < this.root.scrollTop) this.root.scrollTop = top;
-    else if (bottom > this.root.scrollTop + this.root.clientHeight) this.root.scrollTop = bottom - this.root.clientHeight;
+    scrollToBand(this.root, top, top + this.rowHeight);
     this.draw();
-  }
-
-  requestDraw() {
-    if (this.drawPending) return;
-    this.drawPending = true;
-    requestAnimationFrame(() => {
-      this.drawPending = false;
-      this.draw();
-    });
   }
 
   draw() {
