@@ -45,13 +45,13 @@ async function main() {
   const catalog = await readCatalog();
   const maps = manifest.maps.filter((m) => /^R\d+\.\d+'?$/.test(m.source) && (!only || only.includes(m.source)));
   await mkdir(CACHE, { recursive: true });
-  await mkdir(`${DIST}/thumbnails`, { recursive: true });
-  await mkdir(`${DIST}/maps`, { recursive: true });
 
   const todo = [];
   for (const m of maps) if (force || !existsSync(`${CACHE}/${thumbnailFile(m.source)}`)) todo.push(m);
   console.log(`build:gallery: ${maps.length} realized maps, ${todo.length} thumbnails to render`);
   const failed = await render(todo);
+  await mkdir(`${DIST}/thumbnails`, { recursive: true });
+  await mkdir(`${DIST}/maps`, { recursive: true });
 
   const files = [];
   for (const m of maps) {

@@ -38,6 +38,14 @@ test('Gallery: every map as a card, filtered to genus 3, R3.1 opened from its ca
   await drawn(page, 'R3.1');
   assert.match(await page.evaluate(() => location.hash), /mode=regmap&map=R3\.1/);
   assert.ok((await foregroundShare(page)) > 0.05, 'the canvas shows the drawn map');
+  // Its fundamental polygon beside the 3D view, which opens the 2D view.
+  const beside = page.locator('[data-role=tiling-beside]');
+  assert.ok(await beside.isVisible(), 'the polygon is beside the 3D view');
+  assert.match(await page.locator('[data-role=drawn-text]').textContent(), /R3\.1 is a regular map of type \{3,7\}: 56 triangular faces/);
+  await beside.click();
+  await page.locator('#tiling-view').waitFor();
+  assert.match(await page.evaluate(() => location.hash), /view=tiling/);
+  assert.ok(!(await beside.isVisible()), 'not beside the 2D view itself');
 });
 
 test('Gallery: a copied permalink reproduces the view, camera included, in a fresh context', async ({ page, url, context }) => {

@@ -43,6 +43,7 @@ export class RegularMapMode {
       choice.disabled = choice.value !== 'tiling' && !surface;
       choice.addEventListener('change', () => this.chooseView(choice.value));
     }
+    this.part('tiling-beside').addEventListener('click', () => this.chooseView('tiling'));
   }
 
   /** Reads the catalog and shows state.map (or the default map). */
@@ -82,8 +83,17 @@ export class RegularMapMode {
     const shown = this.surface ? view : 'tiling';
     for (const choice of this.viewChoices) choice.checked = choice.value === shown;
     this.view.setVisible(shown === 'tiling');
+    this.showTilingBeside(shown);
     this.surface?.setActive(shown === 'surface');
     this.drawn?.setActive(shown === 'map');
+  }
+
+  // Beside a 3D view, the map's fundamental polygon as a small picture that opens the 2D view.
+  showTilingBeside(view = this.viewChoices.find((choice) => choice.checked)?.value) {
+    const button = this.part('tiling-beside');
+    const url = this.view.imageUrl();
+    button.hidden = view === 'tiling' || url === null;
+    if (url !== null) button.querySelector('img').src = url;
   }
 
   async chooseView(view) {
@@ -122,6 +132,7 @@ export class RegularMapMode {
       return;
     }
     this.shown = { name, info: result.info };
+    this.showTilingBeside();
     this.part('map-name').textContent = title;
     fillFigures(this.part('map-figures'), MAP_FIGURES, mapFigureValues(result));
     const dual = this.part('dual');

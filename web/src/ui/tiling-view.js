@@ -89,6 +89,11 @@ export class TilingView {
     this.setDrawn(false);
   }
 
+  /** The URL of the image on screen (valid until the next map), or null when none is drawn. */
+  imageUrl() {
+    return this.image.hidden ? null : (this.shown?.url ?? null);
+  }
+
   /** Shows or hides the whole view (the image keeps its zoom). */
   setVisible(visible) {
     this.root.hidden = !visible;
