@@ -32,6 +32,12 @@ test('Gallery: every map as a card, filtered to genus 3, R3.1 opened from its ca
     assert.match(label, /genus 3, drawn on /);
   }
   assert.match(await page.evaluate(() => location.hash), /genus=3&realized=1/);
+  // The link keeps what was read of a field, in its own spelling, and nothing it cannot read.
+  await page.locator('[data-role=gallery-genus]').fill('3..4');
+  assert.match(await page.evaluate(() => location.hash), /genus=3-4&realized=1/);
+  await page.locator('[data-role=gallery-genus]').fill('3-');
+  assert.doesNotMatch(await page.evaluate(() => location.hash), /genus=/);
+  await page.locator('[data-role=gallery-genus]').fill('3');
   await page.screenshot({ path: `${RESULTS}/gallery-genus-3.png` });
 
   await page.getByRole('link', { name: /^R3\.1, type/ }).click();

@@ -23,6 +23,7 @@ export class GalleryMode {
     Object.assign(this, { panel, status, base, mapLink, onStateChange });
     this.part = (role) => panel.querySelector(`[data-role=${role}]`);
     this.entries = null;
+    this.query = null; // the filters as last read (parseGalleryQuery)
     this.thumbnails = new Set();
     this.grid = new VirtualGrid(grid, {
       ...CARD,
@@ -83,23 +84,26 @@ export class GalleryMode {
       const key = field === 'find' ? 'name' : field;
       this.input(field).setAttribute('aria-invalid', String(Object.hasOwn(problems, key)));
     }
+    this.query = query;
     const shown = filterGallery(this.entries, query);
     this.grid.setItems(shown);
     const found = shown.length === 0 ? 'No map matches.' : `${count(shown.length)} of ${count(this.entries.length)} maps`;
     this.part('gallery-count').textContent = [...Object.values(problems), found].join(' ');
   }
 
-  // The filters as the link keeps them (empty fields as null, the default order as null).
+  // The filters as the link keeps them: what was read of each field (a field that could not be
+  // read is left out), empty ones and the default order as null.
   fieldState() {
-    const text = (field) => this.input(field).value.trim() || null;
+    const { name, genus, p, q, realized, base, sort } = this.query;
+    const range = genus && (genus.min === genus.max ? `${genus.min}` : `${genus.min}-${genus.max}`);
     return {
-      find: text('find'),
-      genus: text('genus'),
-      p: text('p'),
-      q: text('q'),
-      realized: this.input('realized').checked,
-      kind: this.input('kind').value || null,
-      sort: this.input('sort').value === 'genus' ? null : this.input('sort').value,
+      find: name ? this.input('find').value.trim() : null,
+      genus: range || null,
+      p: p === null ? null : String(p),
+      q: q === null ? null : String(q),
+      realized,
+      kind: base,
+      sort: sort === 'genus' ? null : sort,
     };
   }
 
