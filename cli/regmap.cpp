@@ -7,8 +7,10 @@
 #include <set>
 
 #include "base/error.h"
+#include "base/file_name.h"
 #include "base/limits.h"
 #include "commands.h"
+#include "export/print_check.h"
 #include "export/write_mesh.h"
 #include "mesh/readers.h"
 #include "regmap/catalog.h"
@@ -33,6 +35,48 @@ namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
+
+constexpr const char* kPrintHelp =
+    "  -o FILE.stl      the surface as a solid for 3D printing, in millimetres: scaled to\n"
+    "                   --print-size MM (the largest side, default 100), outward facing, on\n"
+    "                   z = 0; checked for holes, self-intersections and walls thinner than\n"
+    "                   --wall MM (default 1; the solid's thickness at every vertex)\n";
+
+// Print size and wall of `parsed` (export/print_check.h); refused unless the output is an STL.
+PrintOptions print_options(const ParsedArgs& parsed, const std::string& output) {
+  PrintOptions options;
+  const bool stl = lowercase_extension(output) == "stl";
+  if (!stl && (parsed.has("--print-size") || parsed.has("--wall")))
+    throw UsageError("--print-size and --wall are for an STL file to print (-o FILE.stl)");
+  options.size_mm = parsed.number("--print-size", options.size_mm);
+  options.wall_mm = parsed.number("--wall", options.wall_mm);
+  return options;
+}
+
+// Writes the scene to `output` (an STL as the checked solid to print); returns the print check
+// as JSON, null for the other formats.
+Json write_scene(const std::string& output, const Scene& scene, const PrintOptions& print) {
+  if (lowercase_extension(output) != "stl") {
+    write_file_bytes(output, encode_scene(scene, output));
+    return nullptr;
+  }
+  const PrintCheck check = check_print(scene.mesh, print, stderr_progress());
+  write_file_bytes(output, encode_mesh(print_mesh(scene.mesh, check), output));
+  return print_check_json(check);
+}
+
+// The print check in words, for the terminal.
+void print_print_check(const Json& check) {
+  if (check.is_null()) return;
+  const auto& extent = check["extent_mm"];
+  std::printf("  printed %.1f x %.1f x %.1f mm; thinnest wall %.2f mm (at least %.2f asked)\n",
+              extent[0].get<double>(), extent[1].get<double>(), extent[2].get<double>(),
+              check["thinnest_mm"].get<double>(), check["wall_mm"].get<double>());
+  if (check["printable"].get<bool>())
+    std::printf("  printable: closed, oriented, no self-intersections, no thinner wall\n");
+  for (const auto& problem : check["problems"])
+    std::printf("  not printable: %s\n", problem.get<std::string>().c_str());
+}
 
 constexpr const char* kCatalogFile = "regmaps/catalog_g2-101.tsv";
 
@@ -90,7 +134,7 @@ constexpr const char* kTilingHelp =
     "  --max-cosets N, --max-seconds S, --max-file-bytes N   as for 'tessera regmap info'\n";
 
 constexpr const char* kSurfaceHelp =
-    "usage: tessera regmap surface <map> [-o surface.glb|.ply|.obj] [--base platonic|relax]\n"
+    "usage: tessera regmap surface <map> [-o surface.glb|.ply|.obj|.stl] [--base platonic|relax]\n"
     "                              [--json] [options]\n"
     "\n"
     "Builds the map's regular surface (thesis Sec. 9.2-9.6): its edge graph placed in space and\n"
@@ -99,7 +143,7 @@ constexpr const char* kSurfaceHelp =
     "closed, oriented, genus, the relations of the quarter-tube group A, B, C read off the mesh;\n"
     "counts its self-intersections (intersecting triangle pairs).\n"
     "  -o FILE          write the surface: .glb (quarter tubes coloured, per-face _TILE,\n"
-    "                   figures in extras), .ply (integer face property 'tile'), .obj, .off, .stl\n"
+    "                   figures in extras), .ply (integer face property 'tile'), .obj, .off\n"
     "  --base B         platonic: the symmetric base (a double cover of a Platonic solid, or\n"
     "                   one or two junctions); relax: the spring relaxation from the Jemisphere\n"
     "                   (Sec. 9.4). Default: the symmetric base when the map has one, else the\n"
@@ -119,7 +163,8 @@ constexpr const char* kSurfaceHelp =
     "                   as for 'tessera regmap tiling'\n";
 
 constexpr const char* kMapHelp =
-    "usage: tessera regmap map <map> [--on <target>] [-o map.glb|.ply|.obj] [--json] [options]\n"
+    "usage: tessera regmap map <map> [--on <target>] [-o map.glb|.ply|.obj|.stl] [--json]\n"
+    "                          [options]\n"
     "\n"
     "Draws the map (the source, genus g) on the regular surface of a target map of surface genus\n"
     "g (thesis Sec. 9.5-9.6): Platonic maps (Tetrahedron, Cube, Octahedron, Dodecahedron,\n"
@@ -377,13 +422,15 @@ regmap::SurfaceOptions surface_options(const ParsedArgs& parsed) {
 int surface(const Args& args) {
   if (wants_help(args)) {
     std::fputs(kSurfaceHelp, stdout);
+    std::fputs(kPrintHelp, stdout);
     return 0;
   }
-  const ParsedArgs parsed = parse_args(
-      args,
-      {"-o", "--base", "--tube-radius", "--roundness", "--smoothness", "--iterations",
-       "--max-faces", "--max-triangles", "--max-cosets", "--max-seconds", "--max-file-bytes"},
-      {"--json", "--no-self-intersections"}, "regmap surface");
+  const ParsedArgs parsed =
+      parse_args(args,
+                 {"-o", "--base", "--tube-radius", "--roundness", "--smoothness", "--iterations",
+                  "--max-faces", "--max-triangles", "--max-cosets", "--max-seconds",
+                  "--max-file-bytes", "--print-size", "--wall"},
+                 {"--json", "--no-self-intersections"}, "regmap surface");
   if (parsed.positional.size() != 1)
     throw UsageError(
         "'tessera regmap surface' takes one map (a catalog name or a file); run "
@@ -393,6 +440,7 @@ int surface(const Args& args) {
   const regmap::SurfaceOptions options = surface_options(parsed);
   const std::string output = parsed.value("-o");
   if (!output.empty()) check_mesh_format(output);
+  const PrintOptions print = print_options(parsed, output);
   const regmap::Presentation presentation = resolve_map(parsed.positional[0], limits);
   const auto start = std::chrono::steady_clock::now();
   const regmap::FiniteGroup group = regmap::enumerate_group(presentation, limits);
@@ -400,15 +448,17 @@ int surface(const Args& args) {
   const regmap::RegularSurface result =
       regmap::build_regular_surface(presentation, group, options, limits, stderr_progress());
   const double seconds = seconds_since(start);
-  if (!output.empty())
-    write_file_bytes(
-        output, encode_scene(regmap::regular_surface_scene(result, presentation.name), output));
+  const Json printed =
+      output.empty()
+          ? Json()
+          : write_scene(output, regmap::regular_surface_scene(result, presentation.name), print);
   const regmap::SurfaceStats& s = result.stats;
   if (parsed.has("--json")) {
     Json out = {{"name", presentation.name}};
     const Json stats = regmap::surface_stats_json(s);
     for (const auto& [key, value] : stats.items()) out[key] = value;
     out["seconds"] = seconds;  // with the enumeration
+    if (!printed.is_null()) out["print"] = printed;
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
   }
@@ -424,6 +474,7 @@ int surface(const Args& args) {
   if (s.self_intersections_searched)
     std::printf("  %zu self-intersecting triangle pairs\n", s.self_intersections);
   std::printf("  %.3f s\n", seconds);
+  print_print_check(printed);
   if (!output.empty()) std::printf("  wrote %s\n", output.c_str());
   return 0;
 }
@@ -468,12 +519,14 @@ double radius_from(const ParsedArgs& parsed, double fallback) {
 int map_on_target(const Args& args) {
   if (wants_help(args)) {
     std::fputs(kMapHelp, stdout);
+    std::fputs(kPrintHelp, stdout);
     return 0;
   }
-  const ParsedArgs parsed = parse_args(args,
-                                       {"-o", "--on", "--subdivisions", "--max-steps", "--radius",
-                                        "--max-cosets", "--max-seconds", "--max-file-bytes"},
-                                       {"--json", "--no-self-intersections"}, "regmap map");
+  const ParsedArgs parsed =
+      parse_args(args,
+                 {"-o", "--on", "--subdivisions", "--max-steps", "--radius", "--max-cosets",
+                  "--max-seconds", "--max-file-bytes", "--print-size", "--wall"},
+                 {"--json", "--no-self-intersections"}, "regmap map");
   if (parsed.positional.size() != 1)
     throw UsageError(
         "'tessera regmap map' takes one map (a catalog name or a file); run "
@@ -481,6 +534,7 @@ int map_on_target(const Args& args) {
   const Limits limits = limits_from(parsed);
   const std::string output = parsed.value("-o");
   if (!output.empty()) check_mesh_format(output);
+  const PrintOptions print = print_options(parsed, output);
   regmap::PairingLimits pairing_limits;
   pairing_limits.max_steps = parsed.count("--max-steps", pairing_limits.max_steps);
   pairing_limits.radius = radius_from(parsed, pairing_limits.radius);
@@ -503,11 +557,12 @@ int map_on_target(const Args& args) {
       regmap::draw_realization(group, words, chosen, options, limits, stderr_progress());
   const double seconds = seconds_since(start);
   const regmap::MappedMapStats& s = map.drawn.stats;
-  const nlohmann::ordered_json out =
-      regmap::drawn_map_json(presentation.name, figures, map, seconds);
-  if (!output.empty())
-    write_file_bytes(output,
-                     encode_scene(regmap::drawn_map_scene(map, presentation.name, out), output));
+  Json out = regmap::drawn_map_json(presentation.name, figures, map, seconds);
+  const Json printed =
+      output.empty()
+          ? Json()
+          : write_scene(output, regmap::drawn_map_scene(map, presentation.name, out), print);
+  if (!printed.is_null()) out["print"] = printed;
   if (parsed.has("--json")) {
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
@@ -523,6 +578,7 @@ int map_on_target(const Args& args) {
   if (s.self_intersections_searched)
     std::printf("  %zu self-intersecting triangle pairs\n", s.self_intersections);
   std::printf("  %.3f s\n", seconds);
+  print_print_check(printed);
   if (!output.empty()) std::printf("  wrote %s\n", output.c_str());
   return 0;
 }

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "cli_run.h"
+#include "mesh/geometry.h"
 #include "mesh/readers.h"
 #include "mesh_test_util.h"
 
@@ -39,6 +40,40 @@ TEST(RegmapMapCli, JsonAndPlyOfR34OnItsTorusMap) {
   EXPECT_EQ(std::set<int>(face.begin(), face.end()).size(), 12u);
   const auto& tile = mesh.face_attributes.at("tile");
   EXPECT_EQ(std::set<int>(tile.begin(), tile.end()).size(), 16u);  // 4E of {4,4}_(1,1)
+}
+
+// An STL to print: in millimetres at the size asked, closed, and the print check in the JSON, with
+// a wall thicker than the tubes named as the problem.
+TEST(RegmapMapCli, StlToPrintIsScaledAndChecked) {
+  const std::string stl = test::temp_path("r31_print.stl");
+  const auto r = run_cli("regmap map R3.1 -o '" + stl + "' --print-size 80 --wall 1 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto print = nlohmann::json::parse(r.out)["print"];
+  EXPECT_EQ(print["closed"], true);
+  EXPECT_EQ(print["oriented"], true);
+  EXPECT_EQ(print["self_intersections"], 0);
+  EXPECT_EQ(print["printable"], true);
+  const double thinnest = print["thinnest_mm"].get<double>();
+  EXPECT_GT(thinnest, 1.0);
+  const Mesh mesh = read_mesh_file(stl, Limits());
+  const BoundingBox box = bounding_box(mesh);
+  EXPECT_NEAR((box.max - box.min).maxCoeff(), 80.0, 1e-3);
+  EXPECT_NEAR(box.min.z(), 0.0, 1e-3);
+
+  const auto thin = run_cli("regmap map R3.1 -o '" + stl + "' --print-size 80 --wall " +
+                            std::to_string(2 * thinnest));
+  ASSERT_EQ(thin.exit_code, 0) << thin.out;
+  EXPECT_NE(thin.out.find("not printable: the solid is thinner than"), std::string::npos)
+      << thin.out;
+  EXPECT_NE(thin.out.find("print it at least 16"), std::string::npos) << thin.out;  // 2 x 80
+
+  const auto glb =
+      run_cli("regmap map R3.1 -o '" + test::temp_path("r31.glb") + "' --wall 2", true);
+  EXPECT_EQ(glb.exit_code, 2);
+  EXPECT_NE(glb.out.find("--print-size and --wall are for an STL"), std::string::npos) << glb.out;
+  const auto bad = run_cli("regmap map R3.1 -o '" + stl + "' --print-size 0", true);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.out.find("print size must be"), std::string::npos) << bad.out;
 }
 
 TEST(RegmapMapCli, PicksATargetOfTheGenusByItself) {

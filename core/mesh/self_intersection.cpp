@@ -1,11 +1,12 @@
 #include "mesh/self_intersection.h"
 
+#include "mesh/triangle_grid.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
 
 #include <Eigen/Geometry>
 
@@ -116,71 +117,11 @@ bool coplanar_intersect(const Triangle& s, const Triangle& t, const Vector3d& n)
   return inside_2d(p, q[0]) || inside_2d(q, p[0]);
 }
 
-// ---- The grid ---------------------------------------------------------------------------------
-
-struct Box {
-  Vector3d lo, hi;
-};
-
-using CellKey = std::uint64_t;
-constexpr int kCellBits = 21;
-
-class Grid {
- public:
-  Grid(const Vector3d& origin, double cell) : origin_(origin), cell_(cell) {}
-
-  std::array<std::int64_t, 3> cell_of(const Vector3d& p) const {
-    std::array<std::int64_t, 3> c{};
-    for (int i = 0; i < 3; ++i) {
-      const double x = std::floor((p[i] - origin_[i]) / cell_);
-      c[static_cast<std::size_t>(i)] =
-          std::clamp<std::int64_t>(static_cast<std::int64_t>(x), 0, (1 << kCellBits) - 1);
-    }
-    return c;
-  }
-  static CellKey key(const std::array<std::int64_t, 3>& c) {
-    return static_cast<CellKey>(c[0]) | static_cast<CellKey>(c[1]) << kCellBits |
-           static_cast<CellKey>(c[2]) << (2 * kCellBits);
-  }
-
- private:
-  Vector3d origin_;
-  double cell_;
-};
-
-struct Triangles {
-  std::vector<std::array<Index, 3>> corners;
-  std::vector<Index> face;
-  std::vector<Box> box;
-};
-
-Triangles fan_triangles(const Mesh& mesh) {
-  Triangles t;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-    const auto face = mesh.face(f);
-    for (std::size_t i = 1; i + 1 < face.size(); ++i) {
-      t.corners.push_back({face[0], face[i], face[i + 1]});
-      t.face.push_back(static_cast<Index>(f));
-      Box b{mesh.positions[face[0]], mesh.positions[face[0]]};
-      for (Index v : {face[i], face[i + 1]}) {
-        b.lo = b.lo.cwiseMin(mesh.positions[v]);
-        b.hi = b.hi.cwiseMax(mesh.positions[v]);
-      }
-      t.box.push_back(b);
-    }
-  }
-  return t;
-}
-
 bool share_vertex(const std::array<Index, 3>& s, const std::array<Index, 3>& t) {
   for (Index a : s)
     for (Index b : t)
       if (a == b) return true;
   return false;
-}
-
-bool boxes_overlap(const Box& a, const Box& b) {
-  return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
 }
 
 }  // namespace
@@ -207,52 +148,22 @@ bool triangles_intersect(const Vector3d& a, const Vector3d& b, const Vector3d& c
 }
 
 SelfIntersections find_self_intersections(const Mesh& mesh, const Progress& progress) {
-  const Triangles tris = fan_triangles(mesh);
+  const TriangleGrid grid(mesh);
   SelfIntersections result;
-  if (tris.corners.empty()) return result;
-  Vector3d lo = tris.box[0].lo, hi = tris.box[0].hi;
-  double extent = 0.0;
-  for (const Box& b : tris.box) {
-    lo = lo.cwiseMin(b.lo);
-    hi = hi.cwiseMax(b.hi);
-    extent += (b.hi - b.lo).maxCoeff();
-  }
-  const double diagonal = (hi - lo).norm();
-  const double cell = std::max(
-      {extent / static_cast<double>(tris.box.size()), diagonal / (1 << kCellBits) * 2, 1e-300});
-  const Grid grid(lo, cell);
-
-  std::unordered_map<CellKey, std::vector<std::uint32_t>> cells;
-  for (std::uint32_t i = 0; i < tris.box.size(); ++i) {
-    const auto a = grid.cell_of(tris.box[i].lo), b = grid.cell_of(tris.box[i].hi);
-    for (std::int64_t x = a[0]; x <= b[0]; ++x)
-      for (std::int64_t y = a[1]; y <= b[1]; ++y)
-        for (std::int64_t z = a[2]; z <= b[2]; ++z) cells[Grid::key({x, y, z})].push_back(i);
-  }
-
   std::vector<bool> involved(mesh.face_count(), false);
-  std::size_t visited = 0;
-  for (const auto& [key, list] : cells) {
-    if (++visited % 4096 == 0)
-      progress.step("self-intersections", static_cast<double>(visited) / cells.size());
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      for (std::size_t j = i + 1; j < list.size(); ++j) {
-        const std::uint32_t s = list[i], t = list[j];
-        if (!boxes_overlap(tris.box[s], tris.box[t])) continue;
-        // Test each pair in one cell only: the cell of the corner where their boxes' overlap
-        // begins.
-        if (Grid::key(grid.cell_of(tris.box[s].lo.cwiseMax(tris.box[t].lo))) != key) continue;
-        if (share_vertex(tris.corners[s], tris.corners[t])) continue;
-        const auto& p = mesh.positions;
-        const auto& cs = tris.corners[s];
-        const auto& ct = tris.corners[t];
-        if (!triangles_intersect(p[cs[0]], p[cs[1]], p[cs[2]], p[ct[0]], p[ct[1]], p[ct[2]]))
-          continue;
-        ++result.triangle_pairs;
-        involved[tris.face[s]] = involved[tris.face[t]] = true;
-      }
-    }
-  }
+  std::size_t cells = 0;
+  const auto test = [&](std::uint32_t s, std::uint32_t t) {
+    const auto& cs = grid.corners[s];
+    const auto& ct = grid.corners[t];
+    if (share_vertex(cs, ct)) return;
+    const auto& p = mesh.positions;
+    if (!triangles_intersect(p[cs[0]], p[cs[1]], p[cs[2]], p[ct[0]], p[ct[1]], p[ct[2]])) return;
+    ++result.triangle_pairs;
+    involved[grid.face[s]] = involved[grid.face[t]] = true;
+  };
+  grid.for_each_overlapping_pair(test, [&](double done) {
+    if (++cells % 4096 == 0) progress.step("self-intersections", done);
+  });
   for (std::size_t f = 0; f < involved.size(); ++f)
     if (involved[f]) result.faces.push_back(static_cast<Index>(f));
   return result;
