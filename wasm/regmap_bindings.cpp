@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "export/glb.h"
+#include "export/print_check.h"
+#include "export/write_mesh.h"
 #include "guard.h"
 #include "js_progress.h"
 #include "mesh_display.h"
@@ -166,7 +168,7 @@ val surface_glb() {
   });
 }
 
-// The last map drawn on a surface, kept for its GLB export.
+// The last map drawn on a surface, kept for its export.
 struct LastDrawn {
   std::string name;
   regmap::DrawnMap map;
@@ -266,12 +268,30 @@ val map_drawn(const std::string& spec, const val& options, const val& on_progres
   });
 }
 
-// The last drawing as GLB: faces coloured, _FACE and _TILE per face, edges as lines.
-val drawn_glb() {
+// The last drawing as a file: format "glb" (faces coloured, _FACE and _TILE per face, edges as
+// lines), "ply" (integer face properties face and tile), "obj", or "stl", the solid to print at
+// options {sizeMm, wallMm} (export/print_check.h) -> { bytes, print } (print: the check, null
+// for the other formats).
+val drawn_export(const std::string& format, const val& options, const val& on_progress) {
   return guard([&] {
     if (!last_drawn()) throw InputError("no map has been drawn on a surface yet");
     const LastDrawn& d = *last_drawn();
-    return to_typed_array(write_glb(regmap::drawn_map_scene(d.map, d.name, d.figures)));
+    const Scene scene = regmap::drawn_map_scene(d.map, d.name, d.figures);
+    const std::string file = d.name + "." + format;
+    check_mesh_format(file);
+    val result = val::object();
+    if (format == "stl") {
+      PrintOptions print;
+      print.size_mm = number_option(options, "sizeMm", print.size_mm);
+      print.wall_mm = number_option(options, "wallMm", print.wall_mm);
+      const PrintCheck check = check_print(scene.mesh, print, js_progress(on_progress));
+      result.set("bytes", to_typed_array(encode_mesh(print_mesh(scene.mesh, check), file)));
+      result.set("print", json_to_val(print_check_json(check)));
+    } else {
+      result.set("bytes", to_typed_array(encode_scene(scene, file)));
+      result.set("print", val::null());
+    }
+    return result;
   });
 }
 
@@ -284,7 +304,7 @@ EMSCRIPTEN_BINDINGS(tessera_regmap) {
   emscripten::function("regmapSurface", &map_surface);
   emscripten::function("regmapSurfaceGlb", &surface_glb);
   emscripten::function("regmapDrawn", &map_drawn);
-  emscripten::function("regmapDrawnGlb", &drawn_glb);
+  emscripten::function("regmapDrawnExport", &drawn_export);
 }
 
 }  // namespace tessera::wasm

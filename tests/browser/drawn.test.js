@@ -1,6 +1,7 @@
 // The "On a surface" view of the Regular maps mode (thesis Sec. 9.5-9.6): the Klein quartic drawn
 // on the tetrahedron's regular surface from the shipped manifest, its figures, faces in colours and
-// edges in dark lines, the bare surface, the other surfaces, the GLB, and the link that shares it.
+// edges in dark lines, the bare surface, the other surfaces, the exports (GLB, PLY, OBJ, SVG, the
+// STL to print and its check), and the link that shares it.
 import { readFile } from 'node:fs/promises';
 import assert from 'node:assert/strict';
 import validator from 'gltf-validator';
@@ -46,13 +47,38 @@ test('On a surface: R3.1 drawn on the tetrahedron, V 24, E 84, F 56, edges drawn
   assert.ok(bare.dark < shares.dark, 'the bare surface still shows the edges');
   await page.getByLabel('Show the bare surface').uncheck();
 
-  const [download] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export GLB' }).click()]);
-  assert.equal(download.suggestedFilename(), 'R3.1-drawn.glb');
-  const path = `${RESULTS}/R3.1-drawn.glb`;
-  await download.saveAs(path);
-  const report = await validator.validateBytes(new Uint8Array(await readFile(path)));
+  const exportPart = page.locator('[data-role=drawn-export]');
+  const save = async (button, file) => {
+    const [download] = await Promise.all([page.waitForEvent('download'), exportPart.getByRole('button', { name: button, exact: true }).click()]);
+    assert.equal(download.suggestedFilename(), file);
+    const path = `${RESULTS}/${file}`;
+    await download.saveAs(path);
+    return readFile(path);
+  };
+  const report = await validator.validateBytes(new Uint8Array(await save('GLB', 'R3.1-drawn.glb')));
   assert.equal(report.issues.numErrors, 0, JSON.stringify(report.issues.messages.slice(0, 5)));
+  assert.match((await save('PLY', 'R3.1-drawn.ply')).subarray(0, 400).toString('latin1'), /^ply\n[^]*property int face\n/);
+  assert.match((await save('OBJ', 'R3.1-drawn.obj')).toString('latin1'), /\nf \d+ \d+ \d+\n/);
+  assert.match((await save('SVG of the polygon', 'R3.1.svg')).toString('utf8'), /<svg/);
   assert.ok((await foregroundShare(page)) > 0.05);
+
+  // The STL to print: 60 mm across, walls checked against 1 mm, then against a wall thicker than
+  // the tubes, which is named as the problem.
+  await page.getByLabel('Print size').fill('60');
+  await page.getByLabel('Wall').fill('1');
+  const stl = await save('STL to print', 'R3.1-drawn.stl');
+  assert.equal(stl.length, 84 + 50 * stl.readUInt32LE(80));
+  const printReport = page.locator('[data-role=print-report]');
+  await printReport.waitFor();
+  assert.match(await printReport.textContent(), /Printed 60\.0 mm × [\d.]+ mm × [\d.]+ mm; thinnest wall [\d.]+ mm \(1\.0 mm asked\)\.Printable/);
+  await page.getByLabel('Wall').fill('20');
+  await save('STL to print', 'R3.1-drawn.stl');
+  await page.waitForFunction(() => document.querySelector('[data-role=print-report]').dataset.printable === 'false');
+  assert.match(await printReport.textContent(), /Not printable as it is:The solid is thinner than the 20 mm wall/);
+  await page.getByLabel('Wall').fill('-3');
+  await exportPart.getByRole('button', { name: 'STL to print' }).click();
+  assert.equal(await page.getByLabel('Wall').getAttribute('aria-invalid'), 'true');
+  await page.locator('#status').getByText('The print size or wall cannot be used.').waitFor();
 });
 
 test('On a surface: the default view of a map; a link names the surface; R2.4, with no realization, says what was tried and the page stays usable', async ({ page, url }) => {

@@ -102,8 +102,23 @@ test('native and wasm draw a map on the same surface through the same pairing', 
     assert.equal(fromManifest.drawn.target, entry.target);
     assert.equal(fromManifest.drawn.F, native.F);
   }
-  const glb = tessera.regmapDrawnGlb();
-  assert.equal(new TextDecoder().decode(glb.subarray(0, 4)), 'glTF');
+  const glb = tessera.regmapDrawnExport('glb', {}, undefined);
+  assert.equal(new TextDecoder().decode(glb.bytes.subarray(0, 4)), 'glTF');
+  assert.equal(glb.print, null);
+  const ply = tessera.regmapDrawnExport('ply', {}, undefined);
+  assert.match(new TextDecoder().decode(ply.bytes.subarray(0, 400)), /^ply\n[^]*property int face/);
+  // The STL to print: 50 triangles' bytes each after the 84-byte header, checked at the size asked.
+  const stl = tessera.regmapDrawnExport('stl', { sizeMm: 80, wallMm: 1 }, undefined);
+  const triangles = new DataView(stl.bytes.buffer, stl.bytes.byteOffset).getUint32(80, true);
+  assert.equal(stl.bytes.length, 84 + 50 * triangles);
+  assert.equal(Math.max(...stl.print.extent_mm).toFixed(6), '80.000000');
+  assert.ok(stl.print.closed && stl.print.oriented && stl.print.thinnest_mm > 1, JSON.stringify(stl.print));
+  assert.equal(stl.print.printable, stl.print.self_intersections === 0);
+  const thin = tessera.regmapDrawnExport('stl', { sizeMm: 80, wallMm: 2 * stl.print.thinnest_mm }, undefined);
+  assert.equal(thin.print.printable, false);
+  assert.match(thin.print.problems.at(-1), /thinner than the/);
+  assert.throws(() => tessera.regmapDrawnExport('stl', { sizeMm: -1 }, undefined), (e) => e.kind === 'input');
+  assert.throws(() => tessera.regmapDrawnExport('exe', {}, undefined), (e) => e.kind === 'input');
   assert.throws(() => tessera.regmapDrawn('R3.1', { pairing: '{"target": "Tetrahedron"}' }, undefined), (e) => e.kind === 'input');
   assert.throws(() => tessera.regmapDrawn('R3.1', { on: 'Cube' }, undefined), (e) => e.kind === 'input');
 });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { baseKind, filterGallery, galleryEntries, parseGalleryQuery, sortGallery, thumbnailFile } from '../../web/src/ui/gallery-data.js';
+import { baseKind, filterGallery, galleryEntries, packGallery, parseGalleryQuery, sortGallery, thumbnailFile, unpackGallery } from '../../web/src/ui/gallery-data.js';
 import { cameraOf, cameraText, formatHash, parseHash } from '../../web/src/ui/hash.js';
 import { drawnDescription } from '../../web/src/ui/drawn-figures.js';
 
@@ -38,6 +38,13 @@ describe('gallery cards', () => {
     const dual = entries.find((e) => e.name === "R2.1'");
     expect([dual.p, dual.q, dual.order, dual.vertices, dual.edges, dual.faces]).toEqual([8, 3, 96, 16, 24, 6]);
     expect(dual.realization).toBeNull();
+  });
+
+  it('packs the cards into rows the page unpacks to the same cards', () => {
+    const rows = packGallery(entries);
+    expect(rows.find((row) => row[0] === "R2.1'")).toEqual(["R2.1'", 2, 8, 3, 96, 16, 24, 6]);
+    expect(rows.find((row) => row[0] === 'R2.1').slice(8)).toEqual(['{6,3}_(1,0)', 'spine', 3]);
+    expect(unpackGallery(JSON.parse(JSON.stringify(rows)))).toEqual(entries);
   });
 
   it('joins the realizations by name, with the kind of their base', () => {

@@ -1,15 +1,15 @@
 // The page: composes the viewer, the worker client, the status line, the modes and the URL state.
+// The 3D view (three.js) and the Quad layout mode are chunks of their own: a page opened on the
+// gallery paints its cards first and loads them after.
 import './style.css';
-import { Viewer } from './viewer/viewer.js';
 import { WorkerClient } from './worker/client.js';
 import { Status } from './ui/status.js';
 import { Jobs } from './ui/jobs.js';
 import { acceptFiles } from './ui/file-drop.js';
 import { createViewControls } from './ui/view-controls.js';
 import { createTabs } from './ui/tabs.js';
-import { QuadLayoutMode } from './ui/quad-layout-mode.js';
 import { RegularMapMode } from './ui/regmap-mode.js';
-import { GalleryMode, readManifest } from './ui/gallery-mode.js';
+import { GalleryMode, readGalleryIndex } from './ui/gallery-mode.js';
 import { DEFAULT_STATE, cameraOf, cameraText, formatHash, parseHash } from './ui/hash.js';
 import { TilingView } from './ui/tiling-view.js';
 import { DrawnView } from './ui/drawn-view.js';
@@ -25,7 +25,7 @@ const jobs = new Jobs(client, status);
 window.addEventListener('unhandledrejection', (event) => status.showError(event.reason));
 
 let { state, problems: linkProblems } = parseHash(location.hash);
-if (state.mode === 'gallery') readManifest();
+if (state.mode === 'gallery') readGalleryIndex();
 const reportLinkProblems = () => {
   if (linkProblems.length > 0) status.showNotice('Parts of the link were ignored.', linkProblems.join(' '));
 };
@@ -35,48 +35,11 @@ function updateState(partial) {
   history.replaceState(null, '', formatHash(state));
 }
 
-let viewer;
-try {
-  viewer = new Viewer(byId('viewport'), {
-    onContextLost: () =>
-      status.showError({
-        kind: 'internal',
-        message: 'The 3D view lost its graphics context (the GPU was reset or is out of memory). It comes back by itself when the browser allows; reload the page if it does not.',
-      }),
-  });
-} catch (error) {
-  status.showError({ kind: 'internal', message: `The 3D view could not start (${error.message}). Tessera needs a browser with WebGL 2.` });
-}
-
 const request = (label, command, payload) =>
   jobs.run(label, (onProgress) => client.request(command, payload, { onProgress }));
 
-// The modes by id; each starts the first time it is shown. The Quad layout mode and the Regular
-// maps mode's 3D views need the 3D view.
-// A 3D view of the Regular maps mode (DrawnView, SurfaceView) on its section of the panel.
-const mapView = (View, role) =>
-  viewer
-    ? new View({
-        root: byId('regmap-panel').querySelector(`[data-role=${role}]`),
-        note: byId('surface-note'),
-        viewer,
-        status,
-        request,
-        onStateChange: updateState,
-      })
-    : null;
+let viewer; // the 3D view, once its code is loaded (null where WebGL 2 is missing)
 const modes = {
-  regmap: new RegularMapMode({
-    panel: byId('regmap-panel'),
-    view: new TilingView(byId('tiling-view')),
-    viewChoices: [...byId('regmap-views').querySelectorAll('input')],
-    drawn: mapView(DrawnView, 'drawn-view'),
-    surface: mapView(SurfaceView, 'surface-view'),
-    client,
-    jobs,
-    status,
-    onStateChange: updateState,
-  }),
   gallery: new GalleryMode({
     panel: byId('gallery-panel'),
     grid: byId('gallery'),
@@ -93,11 +56,16 @@ const selectTab = createTabs(byId('modes'), MODES, (mode) => {
   showMode();
 });
 
-/** Shows the mode of the state (its tab, panel and view) and brings it to the state. */
+const sceneOf = (id) => MODES.find((mode) => mode.id === id).scene;
+
+/**
+ * Shows the mode of the state (its tab, panel and view) and brings it to the state. A mode whose
+ * parts are not loaded yet starts once they are (the end of this file).
+ */
 function showMode() {
   const id = state.mode;
   selectTab(id);
-  viewer?.showScene(MODES.find((mode) => mode.id === id).scene);
+  viewer?.showScene(sceneOf(id));
   for (const part of document.querySelectorAll('[data-for-mode]')) part.hidden = part.dataset.forMode !== id;
   const mode = modes[id];
   if (!mode) return Promise.resolve();
@@ -105,6 +73,56 @@ function showMode() {
   started.add(id);
   return mode.start(state);
 }
+
+// The gallery's cards are on screen before the 3D view's code is fetched.
+if (state.mode === 'gallery') {
+  await showMode();
+  await new Promise((painted) => requestAnimationFrame(() => setTimeout(painted)));
+}
+const [{ Viewer }, { QuadLayoutMode }] = await Promise.all([
+  import('./viewer/viewer.js'),
+  import('./ui/quad-layout-mode.js'),
+]);
+// The state as the link now says (a card or a tab may have been followed meanwhile).
+({ state, problems: linkProblems } = parseHash(location.hash));
+
+try {
+  viewer = new Viewer(byId('viewport'), {
+    onContextLost: () =>
+      status.showError({
+        kind: 'internal',
+        message: 'The 3D view lost its graphics context (the GPU was reset or is out of memory). It comes back by itself when the browser allows; reload the page if it does not.',
+      }),
+  });
+} catch (error) {
+  status.showError({ kind: 'internal', message: `The 3D view could not start (${error.message}). Tessera needs a browser with WebGL 2.` });
+}
+
+const tilingView = new TilingView(byId('tiling-view'));
+// A 3D view of the Regular maps mode (DrawnView, SurfaceView) on its section of the panel.
+const mapView = (View, role) =>
+  viewer
+    ? new View({
+        root: byId('regmap-panel').querySelector(`[data-role=${role}]`),
+        note: byId('surface-note'),
+        viewer,
+        status,
+        request,
+        onStateChange: updateState,
+        exportSvg: () => tilingView.download(),
+      })
+    : null;
+modes.regmap = new RegularMapMode({
+  panel: byId('regmap-panel'),
+  view: tilingView,
+  viewChoices: [...byId('regmap-views').querySelectorAll('input')],
+  drawn: mapView(DrawnView, 'drawn-view'),
+  surface: mapView(SurfaceView, 'surface-view'),
+  client,
+  jobs,
+  status,
+  onStateChange: updateState,
+});
 
 // The camera and its turning are part of every link (the link's camera is taken by the next
 // framing, so a link reproduces the view once its surface is drawn).
@@ -174,14 +192,14 @@ window.addEventListener('hashchange', () => {
   viewControls?.update({ shading: state.shading, wireframe: state.wireframe });
   applyView(state);
   showMode().then(reportLinkProblems);
-
-// The static build works offline after the first visit (web/src/offline/service-worker.js).
-if (import.meta.env.PROD && 'serviceWorker' in navigator) {
-  navigator.serviceWorker.register('./sw.js').catch(() => {});
-}
 });
 
-showMode().then(reportLinkProblems);
+if (started.has(state.mode)) {
+  viewer?.showScene(sceneOf(state.mode));
+  reportLinkProblems();
+} else {
+  showMode().then(reportLinkProblems);
+}
 
 // The static build works offline after the first visit (web/src/offline/service-worker.js).
 if (import.meta.env.PROD && 'serviceWorker' in navigator) {

@@ -5,19 +5,23 @@ import { DRAWN_FIGURES, drawnDescription, drawnFigureValues } from './drawn-figu
 
 // The colour of the map's edges over its faces: dark, thin.
 const EDGE_COLOR = 0x1d1d1f;
+// The export formats: their file's MIME type.
+const EXPORT_TYPES = Object.freeze({ glb: 'model/gltf-binary', ply: 'application/octet-stream', obj: 'model/obj', stl: 'model/stl' });
 
 /**
  * The "On a surface" view of the Regular maps mode: the map on screen drawn on the regular surface
  * of a target of its genus (the best one, or the one a link or the list of others names), faces in
  * colours, edges as dark lines, with a toggle for the bare surface (coloured by quarter tube), the
- * figures found on the drawing, the other targets and the GLB. While the view is open it shows the
+ * figures found on the drawing, the other targets and its export (GLB, PLY, OBJ, the fundamental
+ * polygon's SVG, and an STL to print at a chosen size, checked). While the view is open it shows the
  * drawing of the map and target on screen, drawing it when there is none, unless that failed or
  * was cancelled.
  * root: the view's section of the panel; note: the element over the viewport shown while nothing
- * is drawn; viewer; status; request(label, command, payload); onStateChange(partial state).
+ * is drawn; viewer; status; request(label, command, payload); onStateChange(partial state);
+ * exportSvg() downloads the map's fundamental polygon.
  */
 export class DrawnView {
-  constructor({ root, note, viewer, status, request, onStateChange }) {
+  constructor({ root, note, viewer, status, request, onStateChange, exportSvg }) {
     Object.assign(this, { root, note, viewer, status, request, onStateChange });
     this.part = (role) => root.querySelector(`[data-role=${role}]`);
     this.map = null; // { spec, name }
@@ -27,7 +31,9 @@ export class DrawnView {
     this.building = null;
     this.stopped = null;
     this.part('bare-surface').addEventListener('change', () => this.showDrawing());
-    this.part('export-drawn-glb').addEventListener('click', () => this.exportGlb());
+    for (const button of this.part('drawn-export').querySelectorAll('[data-format]'))
+      button.addEventListener('click', () => this.exportAs(button.dataset.format));
+    this.part('export-svg').addEventListener('click', exportSvg);
   }
 
   setMap(map) {
@@ -121,11 +127,50 @@ export class DrawnView {
     await this.update();
   }
 
-  async exportGlb() {
+  /** Downloads the drawing as `format` (an EXPORT_TYPES key); an STL with its print check. */
+  async exportAs(format) {
     if (!this.shown) return;
     const { payload, name } = this.shown;
-    const reply = await this.request('Writing the GLB file', COMMANDS.regmapDrawnGlb, payload);
-    if (reply) downloadBytes(reply.bytes, downloadName(`${name}-drawn.glb`, 'glb'), 'model/gltf-binary');
+    const print = format === 'stl' ? this.printOptions() : null;
+    if (format === 'stl' && !print) return;
+    const label = format === 'stl' ? 'Writing the STL to print and checking it' : `Writing the ${format.toUpperCase()} file`;
+    const reply = await this.request(label, COMMANDS.regmapDrawnExport, { ...payload, format, print });
+    if (!reply) return;
+    downloadBytes(reply.bytes, downloadName(`${name}-drawn.${format}`, format), EXPORT_TYPES[format]);
+    if (reply.print) this.showPrintReport(reply.print);
+  }
+
+  /** The print size and wall as typed, in mm, or null (marked and said) where one is no length. */
+  printOptions() {
+    const read = (role, min, max) => {
+      const input = this.part(role);
+      const value = Number(input.value);
+      const ok = input.value.trim() !== '' && Number.isFinite(value) && value >= min && value <= max;
+      input.setAttribute('aria-invalid', String(!ok));
+      return ok ? value : null;
+    };
+    const sizeMm = read('print-size', 1, 10000);
+    const wallMm = read('print-wall', 0.1, 100);
+    if (sizeMm === null || wallMm === null || wallMm >= sizeMm) {
+      this.status.showNotice('The print size or wall cannot be used.', 'The print size is 1 to 10,000 mm, the wall 0.1 to 100 mm and thinner than the print.');
+      return null;
+    }
+    return { sizeMm, wallMm };
+  }
+
+  /** The print check of the STL just written, in words (text only). */
+  showPrintReport(check) {
+    const mm = (x) => `${Number(x).toFixed(1)} mm`;
+    const [x, y, z] = check.extent_mm;
+    const lines = [
+      `Printed ${mm(x)} × ${mm(y)} × ${mm(z)}; thinnest wall ${mm(check.thinnest_mm)} (${mm(check.wall_mm)} asked).`,
+      check.printable ? 'Printable: closed, oriented, no self-intersections, no thinner wall.' : 'Not printable as it is:',
+      ...check.problems.map((problem) => `${problem[0].toUpperCase()}${problem.slice(1)}.`),
+    ];
+    const report = this.part('print-report');
+    report.replaceChildren(...lines.map((line) => Object.assign(document.createElement('span'), { textContent: line })));
+    report.dataset.printable = String(check.printable);
+    report.hidden = false;
   }
 
   clear() {
@@ -136,6 +181,7 @@ export class DrawnView {
       this.viewer.showSurfaceLines(null);
     }
     this.part('drawn-result').hidden = true;
+    this.part('print-report').hidden = true;
     this.showNote();
   }
 

@@ -1,5 +1,5 @@
 import { count } from './info-panel.js';
-import { filterGallery, galleryEntries, parseGalleryQuery, thumbnailFile } from './gallery-data.js';
+import { filterGallery, parseGalleryQuery, thumbnailFile, unpackGallery } from './gallery-data.js';
 import { VirtualGrid } from './virtual-grid.js';
 
 // A card's size in CSS pixels (style.css .gallery-card follows it): a 192 px thumbnail, three
@@ -43,13 +43,13 @@ export class GalleryMode {
   }
 
   /**
-   * Reads the manifest (a chunk of its own, the same file the worker draws from; no core needed,
+   * Reads the cards (a chunk of their own, packed from the manifest at build time; no core needed,
    * so that the cards are on screen at once) and the list of thumbnails, then shows the cards.
    */
   async start(state) {
     try {
-      const [{ default: text }, thumbnails] = await Promise.all([readManifest(), this.readThumbnails()]);
-      this.entries = galleryEntries(JSON.parse(text));
+      const [{ default: rows }, thumbnails] = await Promise.all([readGalleryIndex(), this.readThumbnails()]);
+      this.entries = unpackGallery(rows);
       this.thumbnails = thumbnails;
     } catch (error) {
       this.status.showError({ kind: 'internal', message: `The gallery's list of maps could not be read (${error.message}). Reload the page.` });
@@ -169,14 +169,14 @@ export class GalleryMode {
 
 }
 
-let manifest = null;
+let index = null;
 /**
- * The manifest's chunk, fetched once; the page calls it first thing when it opens on the gallery,
- * so that the fetch runs while the rest of the page starts.
+ * The cards' chunk (scripts/gallery-index-plugin.js), fetched once; the page calls it first thing
+ * when it opens on the gallery, so that the fetch runs while the rest of the page starts.
  */
-export function readManifest() {
-  manifest ??= import('../../../data/regmaps/realizations.json?raw');
-  return manifest;
+export function readGalleryIndex() {
+  index ??= import('virtual:gallery-index');
+  return index;
 }
 
 function text(tag, content) {

@@ -59,7 +59,7 @@ export const COMMANDS = Object.freeze({
   // the other targets that work; surface: coloured by the map's faces; bare: the same mesh
   // coloured by quarter tube; edges: the map's edges (Float32Array, 6 per segment).
   regmapDrawn: 'regmapDrawn', // payload: { map, on } -> { info, drawn, others, surface, bare, edges }
-  regmapDrawnGlb: 'regmapDrawnGlb', // payload: { map, on } -> { bytes }
+  regmapDrawnExport: 'regmapDrawnExport', // payload: { map, on, format, print: { sizeMm, wallMm } } -> { bytes, print }
 });
 
 /** Error kinds that the page adds to the core's. */

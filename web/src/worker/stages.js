@@ -32,6 +32,11 @@ export const DRAWN_STAGES = Object.freeze([
   ['faces', "Labelling the map's faces and edges"],
   ['checks', 'Checking the drawing: faces, vertices, edges, genus'],
 ]);
+// The print check of an STL export (export/print_check.h).
+export const PRINT_STAGES = Object.freeze([
+  ['self-intersections', 'Checking the solid for self-intersections'],
+  ['thickness', 'Measuring the thinnest wall'],
+]);
 
 export const SURFACE_STAGES = Object.freeze([
   ['hyperbolic tiling', 'Growing the hyperbolic tiling'],

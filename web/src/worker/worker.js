@@ -11,6 +11,7 @@ import {
   FIELD_STAGES,
   GRAPH_STAGES,
   PARAM_STAGES,
+  PRINT_STAGES,
   SOLVE_STAGES,
   SURFACE_STAGES,
   planStages,
@@ -172,12 +173,13 @@ const handlers = {
     };
   },
 
-  async [COMMANDS.regmapDrawnGlb]({ map, on }, progress) {
+  async [COMMANDS.regmapDrawnExport]({ map, on, format, print }, progress) {
     progress('Starting the geometry core', 0);
     const module = await loadCore();
-    if (drawings.get(module) !== drawnKey(map, on)) await drawMap(map, on, progress, 0.8);
-    progress('Writing the GLB file', 0.8);
-    return { bytes: module.regmapDrawnGlb() };
+    if (drawings.get(module) !== drawnKey(map, on)) await drawMap(map, on, progress, 0.5);
+    progress(`Writing the ${String(format).toUpperCase()} file`, 0.5);
+    const plan = planStages(PRINT_STAGES, [1, 1], 0.5, 1);
+    return module.regmapDrawnExport(String(format), print ?? {}, stagedProgress(plan, progress));
   },
 
   async [COMMANDS.regmapSurfaceGlb]({ map, options }, progress) {
