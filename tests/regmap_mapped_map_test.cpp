@@ -6,6 +6,10 @@
 // oriented surface of the source's genus.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <numeric>
+#include <set>
+
 #include <array>
 #include <set>
 #include <utility>
@@ -213,6 +217,35 @@ void expect_drawn(const std::string& source, const std::string& target) {
   EXPECT_EQ(s.genus, d.figures.genus);
   EXPECT_EQ(m.mesh.face_attributes.at(kFaceAttribute).size(), m.mesh.face_count());
   EXPECT_FALSE(m.edge_segments.empty());
+  // The faces' orbits under the tubes' rotations, read off the mesh, are those of the group
+  // <x, y> acting on M's faces from the left, counted here from the group alone; and each orbit
+  // label stands for whole faces.
+  const Pairing& pairing = d.search.pairings[0];
+  const Orbits faces = face_orbits(d.source);
+  std::vector<Index> parent(faces.count);
+  std::iota(parent.begin(), parent.end(), Index{0});
+  const auto root = [&](Index v) {
+    while (parent[v] != v) v = parent[v];
+    return v;
+  };
+  for (Element g = 0; g < static_cast<Element>(d.source.order()); ++g)
+    for (Element k : {pairing.x, pairing.y}) {
+      const Index a = root(static_cast<Index>(faces.label[static_cast<std::size_t>(g)]));
+      const Index b =
+          root(static_cast<Index>(faces.label[static_cast<std::size_t>(words.multiply(k, g))]));
+      parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::set<Index> roots;
+  for (Index f = 0; f < faces.count; ++f) roots.insert(root(f));
+  EXPECT_EQ(s.face_orbits, roots.size());
+  const auto& face = m.mesh.face_attributes.at(kFaceAttribute);
+  const auto& orbit = m.mesh.face_attributes.at(kOrbitAttribute);
+  std::map<std::int32_t, std::int32_t> orbit_of_face;
+  for (std::size_t t = 0; t < face.size(); ++t) {
+    EXPECT_EQ(orbit_of_face.emplace(face[t], orbit[t]).first->second, orbit[t]);
+    EXPECT_EQ(root(static_cast<Index>(face[t])) == root(static_cast<Index>(face[0])),
+              orbit[t] == orbit[0]);
+  }
   // The drawing subdivides the surface's triangles: the same area, and crossings only where the
   // surface has them.
   EXPECT_NEAR(area(m.mesh), area(surface.mesh), 1e-9 * area(surface.mesh));

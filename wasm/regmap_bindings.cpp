@@ -255,6 +255,7 @@ val map_drawn(const std::string& spec, const val& options, const val& on_progres
     const Mesh& mesh = map.drawn.mesh;
     set_display_arrays(result, mesh);
     result.set("face", to_typed_array(mesh.face_attributes.at(regmap::kFaceAttribute)));
+    result.set("orbit", to_typed_array(mesh.face_attributes.at(regmap::kOrbitAttribute)));
     result.set("tile", to_typed_array(mesh.face_attributes.at(regmap::kTileAttribute)));
     std::vector<float> edges;
     edges.reserve(6 * map.drawn.edge_segments.size());

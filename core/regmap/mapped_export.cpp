@@ -27,6 +27,7 @@ nlohmann::ordered_json drawn_map_json(const std::string& source_name, const MapF
           {"E", s.edges},
           {"F", s.faces},
           {"expected", {{"V", figures.vertices}, {"E", figures.edges}, {"F", figures.faces}}},
+          {"face_orbits", s.face_orbits},
           {"faces_are_disks", s.faces_are_disks},
           {"covers_once", s.covers_once},
           {"closed", s.closed},

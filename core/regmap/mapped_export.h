@@ -27,13 +27,15 @@ DrawnMap draw_realization(const FiniteGroup& source, const ElementWords& words,
                           const Realization& realization, const MappedMapOptions& options,
                           const Limits& limits, const Progress& progress = Progress());
 
-// source, target, target_kind, genus, V, E, F (found), expected {V, E, F}, faces_are_disks,
+// source, target, target_kind, genus, V, E, F (found), expected {V, E, F}, face_orbits (of M's
+// faces under the surface's rotations), faces_are_disks,
 // covers_once, closed, oriented, self_intersections (null when not searched),
 // symmetries_verified, surface_base, subdivisions, mesh_vertices, mesh_faces, pairing, seconds.
 nlohmann::ordered_json drawn_map_json(const std::string& source_name, const MapFigures& figures,
                                       const DrawnMap& map, double seconds);
 
-// The drawing with faces coloured by M's face, per-face "face" and "tile" (_FACE, _TILE in GLB),
+// The drawing with faces coloured by M's face, per-face "face", "orbit" and "tile" (_FACE, _ORBIT,
+// _TILE in GLB),
 // M's edges as the line set "edges", extras {"map": name, "mapped": drawn_map_json(...)}.
 Scene drawn_map_scene(const DrawnMap& map, const std::string& source_name,
                       const nlohmann::ordered_json& figures);

@@ -1016,6 +1016,11 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
   }
   progress.step("faces", 0.5);
   std::vector<std::int32_t> face_label, tile_label;
+  // The faces at one place of one template, over all quarter tubes of that kind, are one orbit of
+  // the elements those tubes carry: the first face seen at each place stands for the others.
+  std::vector<Index> orbit_parent(faces.count);
+  std::iota(orbit_parent.begin(), orbit_parent.end(), Index{0});
+  std::map<std::pair<bool, Element>, Index> first_at_place;
   std::set<std::pair<Index, Index>> segments;
   for (std::size_t g = 0; g < tiles; ++g) {
     const Template& shape = *shape_of[g];
@@ -1028,13 +1033,29 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
       else
         mesh.add_face({at(t[0]), at(t[1]), at(t[2])});
       const Element flag = words.multiply(frames[g].element, shape.triangle_flag[k]);
-      face_label.push_back(faces.label[static_cast<std::size_t>(flag)]);
+      const std::int32_t face = faces.label[static_cast<std::size_t>(flag)];
+      face_label.push_back(face);
       tile_label.push_back(static_cast<std::int32_t>(g));
+      const auto [place, first] = first_at_place.emplace(
+          std::pair(frames[g].mirrored, shape.triangle_flag[k]), static_cast<Index>(face));
+      if (!first) {
+        const Index u = find_root(orbit_parent, place->second);
+        const Index v = find_root(orbit_parent, static_cast<Index>(face));
+        if (u != v) orbit_parent[std::max(u, v)] = std::min(u, v);
+      }
     }
     for (const auto& [u, v] : shape.map_edges)
       segments.insert({std::min(at(u), at(v)), std::max(at(u), at(v))});
   }
+  std::vector<std::int32_t> orbit_of_root(faces.count, -1), orbit_label;
+  std::int32_t orbits = 0;
+  for (std::int32_t face : face_label) {
+    std::int32_t& orbit = orbit_of_root[find_root(orbit_parent, static_cast<Index>(face))];
+    if (orbit < 0) orbit = orbits++;
+    orbit_label.push_back(orbit);
+  }
   mesh.face_attributes[kFaceAttribute] = std::move(face_label);
+  mesh.face_attributes[kOrbitAttribute] = std::move(orbit_label);
   mesh.face_attributes[kTileAttribute] = std::move(tile_label);
   for (const auto& [a, b] : segments) out.edge_segments.push_back({a, b});
 
@@ -1051,6 +1072,7 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
                   polygon_area(base.geometry, {base.corners.begin(), base.corners.end()}));
   const auto& labels = mesh.face_attributes.at(kFaceAttribute);
   stats.faces = std::set<std::int32_t>(labels.begin(), labels.end()).size();
+  stats.face_orbits = static_cast<std::size_t>(orbits);
   stats.faces_are_disks = faces_are_disks(mesh, faces.count, segments);
   check_closed_and_oriented(mesh, stats);
   if (stats.closed && stats.oriented)

@@ -17,7 +17,9 @@
 //      g y x^-1 and back), checked on every adjacency and for injectivity;
 //   3. the mesh: the overlay in every quarter tube, each vertex in the plane of its surface
 //      triangle (the drawing is a subdivision of the surface: it self-intersects only where the
-//      surface does), triangles labelled with M's face of g times their flag, side vertices shared with the
+//      surface does), triangles labelled with M's face of g times their flag and with that face's
+//      orbit under the elements the quarter tubes of one kind carry (the image of Sym+(T): the
+//      rotations of the surface that carry the drawing onto itself), side vertices shared with the
 //      neighbour's (both templates cut a side alike: the pairing's rotations map one onto the
 //      other); M's edges are the template's edges along N-O sides.
 // Checks, all from the built mesh: closed, oriented, genus, the pieces' areas cover every flag
@@ -39,6 +41,7 @@
 namespace tessera::regmap {
 
 inline constexpr const char* kFaceAttribute = "face";
+inline constexpr const char* kOrbitAttribute = "orbit";
 
 struct MappedMapOptions {
   int subdivisions = 0;  // of the template's pieces before the overlay; 0 picks 2
@@ -46,9 +49,10 @@ struct MappedMapOptions {
 };
 
 struct MappedMapStats {
-  std::size_t vertices = 0;  // M's vertices found on the surface
-  std::size_t edges = 0;     // M's edges (their midpoints) found
-  std::size_t faces = 0;     // distinct face labels
+  std::size_t vertices = 0;     // M's vertices found on the surface
+  std::size_t edges = 0;        // M's edges (their midpoints) found
+  std::size_t faces = 0;        // distinct face labels
+  std::size_t face_orbits = 0;  // orbits of M's faces under the surface's rotations
   bool faces_are_disks = false;
   bool covers_once = false;  // the quarter tubes cover every flag of M once (by area)
   bool closed = false;
@@ -62,7 +66,7 @@ struct MappedMapStats {
 };
 
 struct MappedMap {
-  Mesh mesh;  // face attributes "face" (M's face) and "tile" (the quarter tube)
+  Mesh mesh;  // face attributes "face" (M's face), "orbit" (its orbit), "tile" (the quarter tube)
   std::vector<std::array<Index, 2>> edge_segments;  // M's edges, as mesh edges
   MappedMapStats stats;
 };

@@ -6,7 +6,7 @@ import { readFile } from 'node:fs/promises';
 import assert from 'node:assert/strict';
 import validator from 'gltf-validator';
 import { RESULTS, test } from './harness.js';
-import { foregroundShare, idle, openMap, pixelShares } from './helpers.js';
+import { changedShare, foregroundShare, idle, openMap, pixelShares } from './helpers.js';
 
 const drawnFigure = (page, key) => page.locator(`[data-role=drawn-figures] [data-figure=${key}]`).textContent();
 
@@ -42,10 +42,27 @@ test('On a surface: R3.1 drawn on the tetrahedron, V 24, E 84, F 56, edges drawn
   assert.ok(shares.colour > 0.03, `the faces cover ${shares.colour} of the view`);
   assert.ok(shares.dark > 0.001, `the edges cover ${shares.dark} of the view`);
 
-  await page.getByLabel('Show the bare surface').check();
+  assert.equal(await drawnFigure(page, 'face_orbits'), '6');
+  const colours = page.getByLabel('Colours');
+  await colours.selectOption('tubes');
   const bare = await pixelShares(page, SHARES);
   assert.ok(bare.dark < shares.dark, 'the bare surface still shows the edges');
-  await page.getByLabel('Show the bare surface').uncheck();
+  // Faces by orbit: the 56 faces in 6 colours (the tetrahedron's 12 rotations), edges still drawn;
+  // the link keeps the colouring, and a fresh page opened on it shows the same picture.
+  await colours.selectOption('orbits');
+  await idle(page);
+  const orbits = await pixelShares(page, SHARES);
+  assert.ok(orbits.dark > 0.001 && orbits.colour > 0.03, JSON.stringify(orbits));
+  assert.match(await page.evaluate(() => location.hash), /&colors=orbits/);
+  const orbitPicture = await page.locator('#viewport canvas').screenshot();
+  const other = await page.context().newPage();
+  await other.goto(await page.evaluate(() => location.href));
+  await drawnShown(other);
+  assert.equal(await other.getByLabel('Colours').inputValue(), 'orbits');
+  const share = await changedShare(page, orbitPicture, await other.locator('#viewport canvas').screenshot());
+  assert.ok(share < 0.01, `the link's picture differs in ${share} of the pixels`);
+  await other.close();
+  await colours.selectOption('faces');
 
   const exportPart = page.locator('[data-role=drawn-export]');
   const save = async (button, file) => {

@@ -10,8 +10,8 @@ describe('parseHash', () => {
 
   it('reads every shareable key', () => {
     const { state, problems } = parseHash(
-      '#mode=regmap&sample=genus2&shading=smooth&wireframe=1&map=R3.1&view=surface&base=relax&radius=0.2&smoothness=8' +
-        '&field=1&align=curvature&sharp=180&h=0.05&texture=grid',
+      '#mode=regmap&sample=genus2&shading=smooth&wireframe=1&map=R3.1&view=surface&colors=orbits&base=relax&radius=0.2' +
+        '&smoothness=8&field=1&align=curvature&sharp=180&h=0.05&texture=grid',
     );
     expect(problems).toEqual([]);
     expect(state).toEqual({
@@ -22,6 +22,7 @@ describe('parseHash', () => {
       map: 'R3.1',
       view: 'surface',
       on: null,
+      colors: 'orbits',
       base: 'relax',
       radius: 0.2,
       smoothness: 8,

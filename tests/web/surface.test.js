@@ -155,7 +155,7 @@ describe('drawnFigureValues', () => {
     const drawn = {
       target: 'Tetrahedron', target_kind: 'platonic', pairing: { kind: 'rotations' }, genus: 3,
       V: 24, E: 84, F: 55, expected: { V: 24, E: 84, F: 56 }, faces_are_disks: true, covers_once: true,
-      closed: true, oriented: true, mesh_faces: 166680, seconds: 1.5,
+      face_orbits: 6, closed: true, oriented: true, mesh_faces: 166680, seconds: 1.5,
     };
     const values = drawnFigureValues(drawn);
     expect(values.V).toBe('24 = 24');

@@ -13,6 +13,7 @@ export const DRAWN_FIGURES = Object.freeze([
   ['V', 'Vertices found', String],
   ['E', 'Edges found', String],
   ['F', 'Faces found', String],
+  ['face_orbits', "Face orbits under the surface's rotations", count],
   ['faces_are_disks', 'Every face a disk', yesNo],
   ['covers_once', 'Flags covered once', yesNo],
   ['closed', 'Closed', yesNo],

@@ -11,7 +11,9 @@ const EXPORT_TYPES = Object.freeze({ glb: 'model/gltf-binary', ply: 'application
 /**
  * The "On a surface" view of the Regular maps mode: the map on screen drawn on the regular surface
  * of a target of its genus (the best one, or the one a link or the list of others names), faces in
- * colours, edges as dark lines, with a toggle for the bare surface (coloured by quarter tube), the
+ * colours (each its own, or by orbit of the surface's rotations: faces that a rotation of the
+ * surface carries onto each other share one), edges as dark lines, or the bare surface (coloured
+ * by quarter tube), the
  * figures found on the drawing, the other targets and its export (GLB, PLY, OBJ, the fundamental
  * polygon's SVG, and an STL to print at a chosen size, checked). While the view is open it shows the
  * drawing of the map and target on screen, drawing it when there is none, unless that failed or
@@ -30,7 +32,10 @@ export class DrawnView {
     this.shown = null; // { key, payload, name, result }
     this.building = null;
     this.stopped = null;
-    this.part('bare-surface').addEventListener('change', () => this.showDrawing());
+    this.part('drawn-colors').addEventListener('change', () => {
+      this.showDrawing();
+      this.onStateChange({ colors: this.part('drawn-colors').value });
+    });
     for (const button of this.part('drawn-export').querySelectorAll('[data-format]'))
       button.addEventListener('click', () => this.exportAs(button.dataset.format));
     this.part('export-svg').addEventListener('click', exportSvg);
@@ -46,6 +51,12 @@ export class DrawnView {
   /** The target a link names (null: the best). */
   setTarget(on) {
     this.on = on ?? null;
+  }
+
+  /** The colours a link names: 'faces', 'orbits' or 'tubes' (hash.js). */
+  setColors(colors) {
+    this.part('drawn-colors').value = colors;
+    this.showDrawing();
   }
 
   /** Opens (true) or closes the view; opening it again retries a drawing that failed. */
@@ -95,13 +106,15 @@ export class DrawnView {
     this.onStateChange({ on });
   }
 
-  /** The drawing on screen in the viewer's surface scene, or the bare surface under it. */
+  /** The drawing on screen in the viewer's surface scene in the chosen colours. */
   showDrawing() {
     if (!this.active || !this.shown) return;
     const { result } = this.shown;
-    const bare = this.part('bare-surface').checked;
-    this.viewer.showColoredSurface(bare ? result.bare : result.surface);
-    this.viewer.showSurfaceLines(bare ? null : result.edges, EDGE_COLOR);
+    const colors = this.part('drawn-colors').value;
+    const { surface } = result;
+    const shown = { faces: surface, orbits: { ...surface, colors: surface.recolored }, tubes: result.bare }[colors];
+    this.viewer.showColoredSurface(shown);
+    this.viewer.showSurfaceLines(colors === 'tubes' ? null : result.edges, EDGE_COLOR);
   }
 
   // A button per other target; choosing one draws the map there.

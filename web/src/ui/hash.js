@@ -31,6 +31,9 @@ const FIELDS = Object.freeze({
   // options.
   view: oneOf(['tiling', 'map', 'surface']),
   on: targetName,
+  // The drawn map's colours: each face its own, faces by orbit of the surface's rotations, or the
+  // bare surface by quarter tube.
+  colors: oneOf(['faces', 'orbits', 'tubes']),
   ...SURFACE_PARSERS,
   // The Field view: shown (computed on opening the link), its options, the texture on the surface.
   field: flag,
@@ -70,6 +73,7 @@ export const DEFAULT_STATE = Object.freeze({
   map: null,
   view: 'map',
   on: null,
+  colors: 'faces',
   ...SURFACE_DEFAULTS,
   field: false,
   ...FIELD_DEFAULTS,

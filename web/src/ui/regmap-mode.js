@@ -64,6 +64,7 @@ export class RegularMapMode {
     if (!this.rows) return this.start(state);
     this.surface?.setOptions(state);
     this.drawn?.setTarget(state.on);
+    this.drawn?.setColors(state.colors);
     this.setView(state.view);
     const { map } = state;
     const known = map !== null && findMap(this.rows, map) !== undefined;

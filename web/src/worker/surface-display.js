@@ -11,11 +11,12 @@ import { vertexNormals } from './display.js';
  * triangles (Uint32Array, 3T, the same triangles over the split vertices). A vertex is split once
  * per quarter tube around it; its copies keep the vertex normal of the whole surface.
  * color(tile) -> [r, g, b] in 0..1: the colour of a tile, by default the core's of a quarter tube.
+ * With recolor(tile) -> [r, g, b], also `recolored`: the same split mesh's colours by recolor (a
+ * coarser colouring of the same tiles, such as orbits of faces), without a second mesh.
  */
-export function tiledSurface({ positions, triangles, triangleFace, tile }, color = quarterTubeColor) {
+export function tiledSurface({ positions, triangles, triangleFace, tile }, color = quarterTubeColor, recolor = null) {
   const normals = vertexNormals(positions, triangles);
   const { split, source, tileOf } = splitByTile(positions.length / 3, triangles, triangleFace, tile);
-  const colorOf = new Map();
   const out = {
     positions: new Float32Array(3 * source.length),
     normals: new Float32Array(3 * source.length),
@@ -23,15 +24,25 @@ export function tiledSurface({ positions, triangles, triangleFace, tile }, color
     triangles: split,
   };
   for (let w = 0; w < source.length; w++) {
-    if (!colorOf.has(tileOf[w])) colorOf.set(tileOf[w], color(tileOf[w]));
-    const rgb = colorOf.get(tileOf[w]);
     for (let k = 0; k < 3; k++) {
       out.positions[3 * w + k] = positions[3 * source[w] + k];
       out.normals[3 * w + k] = normals[3 * source[w] + k];
-      out.colors[3 * w + k] = rgb[k];
     }
   }
+  out.colors = tileColors(tileOf, color);
+  if (recolor) out.recolored = tileColors(tileOf, recolor);
   return out;
+}
+
+// Per split vertex, the colour of its tile (3 floats), each tile's colour computed once.
+function tileColors(tileOf, color) {
+  const colorOf = new Map();
+  const colors = new Float32Array(3 * tileOf.length);
+  for (let w = 0; w < tileOf.length; w++) {
+    if (!colorOf.has(tileOf[w])) colorOf.set(tileOf[w], color(tileOf[w]));
+    colors.set(colorOf.get(tileOf[w]), 3 * w);
+  }
+  return colors;
 }
 
 // The triangles over one vertex per (vertex, quarter tube) pair: split (3T), and for each new

@@ -4,6 +4,7 @@ import { COMMANDS, PAGE_ERROR_KINDS, errorEvent, ownedBuffers, progressEvent, re
 import { polygonEdges, vertexNormals } from './display.js';
 import { cornerArrays, crossGlyphs, markerRadius, vertexPoints } from './field-display.js';
 import { tiledSurface } from './surface-display.js';
+import { quarterTubeColor } from '../viewer/palette.js';
 import { arcSegments, patchSurface } from './layout-display.js';
 import { MAX_PRESOLVE_SECONDS, presolveInTurn, presolveOrder } from './presolve.js';
 import {
@@ -162,12 +163,15 @@ const handlers = {
   async [COMMANDS.regmapDrawn]({ map, on }, progress) {
     const result = await drawMap(map, on, progress, 0.85);
     progress('Preparing the view', 0.85);
-    const { info, drawn, others, positions, triangles, triangleFace, face, tile, edges } = result;
+    const { info, drawn, others, positions, triangles, triangleFace, face, orbit, tile, edges } = result;
+    // The faces coloured one by one, and (recolored) by their orbit under the surface's rotations.
+    const orbitOfFace = new Int32Array(face.reduce((most, f) => Math.max(most, f + 1), 0));
+    face.forEach((f, i) => (orbitOfFace[f] = orbit[i]));
     return {
       info,
       drawn,
       others,
-      surface: tiledSurface({ positions, triangles, triangleFace, tile: face }),
+      surface: tiledSurface({ positions, triangles, triangleFace, tile: face }, quarterTubeColor, (f) => quarterTubeColor(orbitOfFace[f])),
       bare: tiledSurface({ positions, triangles, triangleFace, tile }),
       edges,
     };
