@@ -140,7 +140,10 @@ const handlers = {
 
   async [COMMANDS.regmapCatalog](_, progress) {
     progress('Starting the geometry core', 0);
-    const module = await loadCore();
+    // The catalog's text and the manifest (which the drawn view, the mode's default, reads next)
+    // load while the core starts.
+    realizations().catch(() => {});
+    const [module] = await Promise.all([loadCore(), catalogText()]);
     progress('Reading the catalog of regular maps', 0.3);
     return { rows: await catalogOf(module) };
   },
@@ -216,9 +219,9 @@ async function buildSurface(map, options, progress, to) {
 async function drawMap(map, on, progress, to) {
   progress('Starting the geometry core', 0);
   const module = await loadCore();
-  await catalogOf(module);
   progress('Finding the surface to draw on', 0.05);
-  const entry = (await realizations()).get(String(map));
+  const [byName] = await Promise.all([realizations(), catalogOf(module)]);
+  const entry = byName.get(String(map));
   const known = entry && (on === null || on === undefined || on === entry.target);
   const options = known ? { pairing: JSON.stringify(entry.pairing) } : { on: on ?? undefined };
   drawings.delete(module);
@@ -247,12 +250,21 @@ const surfaceKey = (map, { base, tubeRadius, smoothness }) => JSON.stringify([St
 // The shipped catalog, bundled with the page as text (a chunk of its own, loaded on first use) and
 // read by the core, which also needs it to resolve map names.
 async function catalogOf(module) {
-  if (!catalogs.has(module)) {
-    const { default: text } = await import('../../../data/regmaps/catalog_g2-101.tsv?raw');
-    catalogs.set(module, module.regmapLoadCatalog(text));
-  }
+  if (!catalogs.has(module)) catalogs.set(module, module.regmapLoadCatalog(await catalogText()));
   return catalogs.get(module);
 }
+
+let catalogChunk = null;
+const catalogText = () => {
+  catalogChunk ??= import('../../../data/regmaps/catalog_g2-101.tsv?raw').then(
+    ({ default: text }) => text,
+    (error) => {
+      catalogChunk = null;
+      throw error;
+    },
+  );
+  return catalogChunk;
+};
 
 // The core's MeshResult plus what the viewer draws: vertex normals and the polygons' edges.
 function meshForViewer(mesh, progress) {
@@ -383,6 +395,10 @@ function describeFailure(error) {
   }
   return { kind: 'internal', message: `Internal error: ${detail}` };
 }
+
+// The core starts loading with the worker: the first job of every mode needs it (a failure is
+// reported by that job, which tries again).
+loadCore().catch(() => {});
 
 self.onmessage = async ({ data: { id, command, payload } }) => {
   const progress = (stage, fraction) => self.postMessage(progressEvent(id, stage, fraction));
