@@ -54,6 +54,39 @@ test('Gallery: every map as a card, filtered to genus 3, R3.1 opened from its ca
   assert.ok(!(await beside.isVisible()), 'not beside the 2D view itself');
 });
 
+// A card's picture: its source and how much of it is not the background.
+const cardPicture = (page, name) =>
+  page.evaluate((map) => {
+    const card = [...document.querySelectorAll('#gallery .gallery-card')].find((a) => a.getAttribute('aria-label').startsWith(`${map},`));
+    const image = card?.querySelector('img.thumbnail');
+    if (!image?.complete || image.naturalWidth === 0) return null;
+    const canvas = document.createElement('canvas');
+    [canvas.width, canvas.height] = [image.naturalWidth, image.naturalHeight];
+    const context = canvas.getContext('2d');
+    context.drawImage(image, 0, 0);
+    const { data } = context.getImageData(0, 0, canvas.width, canvas.height);
+    let drawn = 0;
+    for (let i = 0; i < data.length; i += 4) drawn += Math.abs(data[i] - 0x23) + Math.abs(data[i + 1] - 0x27) + Math.abs(data[i + 2] - 0x2e) > 40;
+    return { source: image.dataset.source, width: image.naturalWidth, drawn: drawn / (data.length / 4) };
+  }, name);
+
+test('Gallery: a realized map without a built thumbnail gets one rendered in a worker, cached for the next visit', async ({ page, url }) => {
+  // The test's build has no thumbnails (build:gallery did not run): each realized card's picture
+  // is made on demand.
+  await page.goto(`${url}#mode=gallery&genus=3&realized=1&find=R3.1`);
+  await page.waitForFunction(() => document.querySelector('#gallery img.thumbnail[data-source=rendered]')?.complete, null, { timeout: 60_000 });
+  const rendered = await cardPicture(page, 'R3.1');
+  assert.equal(rendered.source, 'rendered');
+  assert.equal(rendered.width, 256);
+  assert.ok(rendered.drawn > 0.05, `the picture shows the map on ${rendered.drawn} of its pixels`);
+  await page.reload();
+  await page.waitForFunction(() => document.querySelector('#gallery img.thumbnail')?.complete, null, { timeout: 10_000 });
+  const cached = await cardPicture(page, 'R3.1');
+  assert.equal(cached.source, 'cache');
+  assert.ok(Math.abs(cached.drawn - rendered.drawn) < 0.01, `cached ${cached.drawn}, rendered ${rendered.drawn}`);
+  await page.locator('#gallery').screenshot({ path: `${RESULTS}/gallery-rendered-thumbnail.png` });
+});
+
 test('Gallery: a copied permalink reproduces the view, camera included, in a fresh context', async ({ page, url, context }) => {
   await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: url });
   await page.goto(`${url}#mode=regmap&map=R9.3'`);

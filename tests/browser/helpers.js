@@ -1,6 +1,6 @@
 // What the browser tests share: opening the page, reading it, and meshes made in code.
 
-export const BACKGROUND_RGB = [0x23, 0x27, 0x2e]; // the viewer's background (web/src/viewer/viewer.js)
+export const BACKGROUND_RGB = [0x23, 0x27, 0x2e]; // the viewer's background (web/src/viewer/look.js)
 
 /** Opens the page (with an optional hash) and waits until a mesh is shown and no job runs. */
 export async function openPage(page, url, hash = '') {

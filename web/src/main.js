@@ -10,6 +10,7 @@ import { createViewControls } from './ui/view-controls.js';
 import { createTabs } from './ui/tabs.js';
 import { RegularMapMode } from './ui/regmap-mode.js';
 import { GalleryMode, readGalleryIndex } from './ui/gallery-mode.js';
+import { ThumbnailMaker } from './ui/thumbnails.js';
 import { DEFAULT_STATE, cameraOf, cameraText, formatHash, parseHash } from './ui/hash.js';
 import { TilingView } from './ui/tiling-view.js';
 import { DrawnView } from './ui/drawn-view.js';
@@ -47,6 +48,10 @@ const modes = {
     base: import.meta.env.BASE_URL,
     mapLink: (map) => formatHash({ ...DEFAULT_STATE, mode: 'regmap', map }),
     onStateChange: updateState,
+    maker: new ThumbnailMaker({
+      createWorker: () => new Worker(new URL('./worker/thumbnail-worker.js', import.meta.url), { type: 'module' }),
+      cacheKey: (file) => new URL(`thumbnails/rendered/${encodeURIComponent(file)}`, document.baseURI).href,
+    }),
   }),
 };
 const started = new Set();

@@ -1,10 +1,9 @@
 import { COMMANDS } from '../worker/protocol.js';
+import { MAP_EDGE_COLOR } from '../viewer/palette.js';
 import { downloadBytes, downloadName } from './download.js';
 import { fillFigures } from './info-panel.js';
 import { DRAWN_FIGURES, drawnDescription, drawnFigureValues } from './drawn-figures.js';
 
-// The colour of the map's edges over its faces: dark, thin.
-const EDGE_COLOR = 0x1d1d1f;
 // The export formats: their file's MIME type.
 const EXPORT_TYPES = Object.freeze({ glb: 'model/gltf-binary', ply: 'application/octet-stream', obj: 'model/obj', stl: 'model/stl' });
 
@@ -114,7 +113,7 @@ export class DrawnView {
     const { surface } = result;
     const shown = { faces: surface, orbits: { ...surface, colors: surface.recolored }, tubes: result.bare }[colors];
     this.viewer.showColoredSurface(shown);
-    this.viewer.showSurfaceLines(colors === 'tubes' ? null : result.edges, EDGE_COLOR);
+    this.viewer.showSurfaceLines(colors === 'tubes' ? null : result.edges, MAP_EDGE_COLOR);
   }
 
   // A button per other target; choosing one draws the map there.

@@ -16,11 +16,13 @@ const BASE_LABELS = Object.freeze({ symmetric: 'symmetric base', spine: 'spine',
  * maps mode. Names come from the catalog and the manifest and are shown as text only.
  * panel: the mode's section of the side panel; grid: the element the cards scroll in; status;
  * base: the URL the static build's files are under (thumbnails/); mapLink(name):
- * the link that opens a map; onStateChange(partial state) when the filters change.
+ * the link that opens a map; onStateChange(partial state) when the filters change; maker: the
+ * ThumbnailMaker (thumbnails.js) that renders a realized map's thumbnail the build has not.
  */
 export class GalleryMode {
-  constructor({ panel, grid, status, base, mapLink, onStateChange }) {
-    Object.assign(this, { panel, status, base, mapLink, onStateChange });
+  constructor({ panel, grid, status, base, mapLink, onStateChange, maker }) {
+    Object.assign(this, { panel, status, base, mapLink, onStateChange, maker });
+    this.rendered = new Map(); // map name -> { url, source } of a thumbnail made in this page
     this.part = (role) => panel.querySelector(`[data-role=${role}]`);
     this.entries = null;
     this.query = null; // the filters as last read (parseGalleryQuery)
@@ -131,23 +133,24 @@ export class GalleryMode {
     card.replaceChildren(link);
   }
 
+  // The build's thumbnail; else, for a realized map, one made on demand, shown in place of the
+  // placeholder once it is there (if the card still shows the map); else the placeholder.
   thumbnail(entry) {
     const file = thumbnailFile(entry.name);
-    if (!this.thumbnails.has(file)) {
-      const missing = text('span', `{${entry.p},${entry.q}}`);
-      missing.className = 'thumbnail missing';
-      missing.setAttribute('aria-hidden', 'true');
-      return missing;
+    if (this.thumbnails.has(file)) return thumbnailImage(`${this.base}thumbnails/${encodeURIComponent(file)}`, 'build');
+    const made = this.rendered.get(entry.name);
+    if (made) return thumbnailImage(made.url, made.source);
+    const missing = text('span', `{${entry.p},${entry.q}}`);
+    missing.className = 'thumbnail missing';
+    missing.setAttribute('aria-hidden', 'true');
+    if (entry.realization && this.maker) {
+      this.maker.get(entry.name, file, () => missing.isConnected).then((thumbnail) => {
+        if (!thumbnail) return;
+        this.rendered.set(entry.name, thumbnail);
+        if (missing.isConnected) missing.replaceWith(thumbnailImage(thumbnail.url, thumbnail.source));
+      });
     }
-    const image = document.createElement('img');
-    image.className = 'thumbnail';
-    image.loading = 'lazy';
-    image.decoding = 'async';
-    image.width = 192;
-    image.height = 192;
-    image.alt = '';
-    image.src = `${this.base}thumbnails/${encodeURIComponent(file)}`;
-    return image;
+    return missing;
   }
 
   // The thumbnails the static build holds (thumbnails/index.json, written by build:gallery); none
@@ -177,6 +180,20 @@ let index = null;
 export function readGalleryIndex() {
   index ??= import('virtual:gallery-index');
   return index;
+}
+
+// A card's picture; source ('build', 'rendered', 'cache') says where it came from.
+function thumbnailImage(src, source) {
+  const image = document.createElement('img');
+  image.className = 'thumbnail';
+  image.loading = 'lazy';
+  image.decoding = 'async';
+  image.width = 192;
+  image.height = 192;
+  image.alt = '';
+  image.dataset.source = source;
+  image.src = src;
+  return image;
 }
 
 function text(tag, content) {

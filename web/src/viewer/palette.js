@@ -1,5 +1,6 @@
-// Colours of singularities by valence (the number of isolines that leave them), shared by the 3D
-// markers and the page's legend.
+// The page's colours that are not the 3D view's look (look.js): singularities by valence (the number
+// of isolines that leave them), shared by the 3D markers and the legend; quarter tubes and patches;
+// a drawn map's edges.
 
 const BY_VALENCE = new Map([
   [1, '#b05cff'],
@@ -37,3 +38,6 @@ export function quarterTubeColor(tile) {
   const x = 1 - Math.abs((hue % 2) - 1);
   return SEXTANTS[Math.floor(hue) % 6](x).map((channel) => LOW + (1 - LOW) * channel);
 }
+
+// The colour of a drawn map's edges over its faces: dark, thin.
+export const MAP_EDGE_COLOR = 0x1d1d1f;

@@ -1,9 +1,7 @@
 import {
-  AmbientLight,
   BufferAttribute,
   BufferGeometry,
   Color,
-  DirectionalLight,
   DoubleSide,
   Group,
   LineBasicMaterial,
@@ -17,9 +15,9 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { segmentLines, surfaceGeometry } from './geometry.js';
+import { BACKGROUND, coloredSurfaceMaterial, framing, lightScene } from './look.js';
 import { uvTexture } from './textures.js';
 
-export const BACKGROUND = '#23272e';
 export const SCENES = Object.freeze(['mesh', 'surface']);
 const SURFACE = '#d9c3a0';
 const EDGES = '#1b1d22';
@@ -45,10 +43,7 @@ export class Viewer {
     this.scene = new Scene();
     this.scene.background = new Color(BACKGROUND);
     this.camera = new PerspectiveCamera(40, 1, 0.01, 100);
-    const headlight = new DirectionalLight('#ffffff', 2.2);
-    headlight.position.set(0.4, 0.6, 1);
-    this.camera.add(headlight);
-    this.scene.add(this.camera, new AmbientLight('#ffffff', 0.9));
+    lightScene(this.scene, this.camera);
     // name -> { root: Group, bounds: bounding sphere of what it shows, view: the camera left there }
     this.scenes = new Map(SCENES.map((name) => [name, { root: new Group(), bounds: null, view: null }]));
     this.shownScene = 'mesh';
@@ -80,7 +75,7 @@ export class Viewer {
     this.texture = 'off';
     this.covered = false; // a layer (the patches of a layout) draws the surface in its place
     this.layers = new Map(); // name -> object
-    this.coloredMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.6, metalness: 0, side: DoubleSide });
+    this.coloredMaterial = coloredSurfaceMaterial();
     this.coloredSurface = null;
     this.surfaceLines = null;
 
@@ -278,12 +273,8 @@ export class Viewer {
     this.onViewChange?.(this.view());
   }
 
-  fit({ center, radius }) {
-    const halfHeight = (this.camera.fov * Math.PI) / 360;
-    const halfWidth = Math.atan(Math.tan(halfHeight) * this.camera.aspect);
-    const distance = (radius || 1) / Math.sin(Math.min(halfHeight, halfWidth));
-    const direction = new Vector3(0.55, 0.45, 1).normalize();
-    this.look({ position: center.clone().addScaledVector(direction, distance), target: center });
+  fit(bounds) {
+    this.look(framing(this.camera, bounds));
   }
 
   // Puts the camera at `position` looking at `target`, with near and far planes for that distance.

@@ -4,11 +4,11 @@ import { COMMANDS, PAGE_ERROR_KINDS, errorEvent, ownedBuffers, progressEvent, re
 import { polygonEdges, vertexNormals } from './display.js';
 import { cornerArrays, crossGlyphs, markerRadius, vertexPoints } from './field-display.js';
 import { tiledSurface } from './surface-display.js';
+import { catalogOf, catalogText, drawMap, dropCore, hasDrawn, loadCore, realizations } from './core.js';
 import { quarterTubeColor } from '../viewer/palette.js';
 import { arcSegments, patchSurface } from './layout-display.js';
 import { MAX_PRESOLVE_SECONDS, presolveInTurn, presolveOrder } from './presolve.js';
 import {
-  DRAWN_STAGES,
   FIELD_STAGES,
   GRAPH_STAGES,
   PARAM_STAGES,
@@ -19,16 +19,7 @@ import {
   stagedProgress,
 } from './stages.js';
 
-// The wasm build is a static file (web/public/wasm), not a source module: an absolute URL keeps
-// Vite's dev server from treating the import as one of its own. The static build has relative
-// URLs (it is hosted under any path): there this worker is a file in assets/, beside wasm/.
-const CORE_URL = new URL(import.meta.env.DEV ? '/wasm/tessera.mjs' : '../wasm/tessera.mjs', self.location.href).href;
-
-let core = null; // Promise of the wasm module, created on first use, dropped after a trap
-const catalogs = new WeakMap(); // wasm module -> its catalog rows, read into it once
 const surfaces = new WeakMap(); // wasm module -> the key (surfaceKey) of the last surface it built
-const drawings = new WeakMap(); // wasm module -> the key (drawnKey) of the last map it drew
-let manifest = null; // Promise of the shipped realizations: map name -> { target, others, pairing }
 // The mesh the module's session holds (the core keeps the last mesh it built), with the arrays the
 // field view is drawn from: { module, id, positions, triangles, normals, fieldKey, paramKey,
 // graphKey, graph, layoutKey }, where id is the page's number of the mesh, and the keys name the
@@ -39,21 +30,6 @@ let session = null;
 // start once the current request is answered.
 let presolveToken = 0;
 let afterReply = null;
-
-function loadCore() {
-  core ??= import(/* @vite-ignore */ CORE_URL)
-    .then(({ default: createTessera }) => createTessera())
-    .catch((cause) => {
-      core = null;
-      const error = new Error(
-        `The geometry core (${CORE_URL}) could not be started: ${cause?.message ?? cause}. ` +
-          'Build it with `npm start` (or scripts/build.sh) and reload the page.',
-      );
-      error.kind = 'internal';
-      throw error;
-    });
-  return core;
-}
 
 const handlers = {
   async [COMMANDS.sampleNames]() {
@@ -183,7 +159,7 @@ const handlers = {
   async [COMMANDS.regmapDrawnExport]({ map, on, format, print }, progress) {
     progress('Starting the geometry core', 0);
     const module = await loadCore();
-    if (drawings.get(module) !== drawnKey(map, on)) await drawMap(map, on, progress, 0.5);
+    if (!hasDrawn(module, map, on)) await drawMap(map, on, progress, 0.5);
     progress(`Writing the ${String(format).toUpperCase()} file`, 0.5);
     const plan = planStages(PRINT_STAGES, [1, 1], 0.5, 1);
     return module.regmapDrawnExport(String(format), print ?? {}, stagedProgress(plan, progress));
@@ -214,57 +190,7 @@ async function buildSurface(map, options, progress, to) {
   return result;
 }
 
-// Draws a map on a target's surface in the core (which keeps it for its GLB): the manifest's
-// pairing when it has one for this map and target, so that the page does not search.
-async function drawMap(map, on, progress, to) {
-  progress('Starting the geometry core', 0);
-  const module = await loadCore();
-  progress('Finding the surface to draw on', 0.05);
-  const [byName] = await Promise.all([realizations(), catalogOf(module)]);
-  const entry = byName.get(String(map));
-  const known = entry && (on === null || on === undefined || on === entry.target);
-  const options = known ? { pairing: JSON.stringify(entry.pairing) } : { on: on ?? undefined };
-  drawings.delete(module);
-  // Shares of the bar as the stages' times for R3.1 on the tetrahedron.
-  const plan = planStages(DRAWN_STAGES, [0.1, 3, 1, 2, 0.5, 1, 3], 0.1, to);
-  const result = module.regmapDrawn(String(map), options, stagedProgress(plan, progress));
-  drawings.set(module, drawnKey(map, on));
-  if (known) result.others = entry.others;
-  return result;
-}
-
-const drawnKey = (map, on) => JSON.stringify([String(map), on ?? null]);
-
-// The shipped manifest of `tessera regmap realize`, bundled as text (a chunk of its own).
-function realizations() {
-  manifest ??= import('../../../data/regmaps/realizations.json?raw').then(({ default: text }) => {
-    const byName = new Map();
-    for (const m of JSON.parse(text).maps ?? []) byName.set(m.source, m);
-    return byName;
-  });
-  return manifest;
-}
-
 const surfaceKey = (map, { base, tubeRadius, smoothness }) => JSON.stringify([String(map), base, tubeRadius, smoothness]);
-
-// The shipped catalog, bundled with the page as text (a chunk of its own, loaded on first use) and
-// read by the core, which also needs it to resolve map names.
-async function catalogOf(module) {
-  if (!catalogs.has(module)) catalogs.set(module, module.regmapLoadCatalog(await catalogText()));
-  return catalogs.get(module);
-}
-
-let catalogChunk = null;
-const catalogText = () => {
-  catalogChunk ??= import('../../../data/regmaps/catalog_g2-101.tsv?raw').then(
-    ({ default: text }) => text,
-    (error) => {
-      catalogChunk = null;
-      throw error;
-    },
-  );
-  return catalogChunk;
-};
 
 // The core's MeshResult plus what the viewer draws: vertex normals and the polygons' edges.
 function meshForViewer(mesh, progress) {
@@ -385,7 +311,7 @@ const fieldKey = ({ align, sharp }) => `${align} ${sharp}`;
 // the next request starts a fresh one.
 function describeFailure(error) {
   if (typeof error?.kind === 'string') return { kind: error.kind, message: error.message };
-  core = null;
+  dropCore();
   const detail = error?.message ?? String(error);
   if (error instanceof WebAssembly.RuntimeError) {
     return {
