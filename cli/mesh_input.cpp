@@ -14,8 +14,10 @@ const char* const kMeshInputHelp =
     "  --max-vertices N     refuse meshes with more vertices (default 4000000)\n"
     "  --max-faces N        refuse meshes with more faces (default 8000000)\n"
     "  --max-file-bytes N   refuse larger files (default 1500000000)\n"
-    "  --weld-tolerance X   weld vertices closer than X times the bounding-box diagonal\n"
-    "                       (default 1e-7; 0 welds identical positions only; -1 never welds)\n";
+    "  --weld-tolerance X   weld boundary vertices closer than X times the bounding-box\n"
+    "                       diagonal, closing cracks (default 1e-7; 0 welds identical\n"
+    "                       positions only; -1 never welds); welds that would make the mesh\n"
+    "                       non-manifold or non-orientable are kept apart, with a warning\n";
 
 LoadedMesh load_mesh_argument(const std::string& path, const ParsedArgs& args) {
   Limits limits;

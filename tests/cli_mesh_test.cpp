@@ -51,6 +51,32 @@ TEST(CliInfo, ReportsRepairsAsWarnings) {
   EXPECT_NE(json["warnings"][0].get<std::string>().find("1 faces flipped"), std::string::npos);
 }
 
+TEST(CliInfo, WeldsCracksAndKeepsApartPartsTouchingAtAVertex) {
+  const std::string cracked =
+      write_temp_file("cracked.obj", write_obj(test::torus_cracked_at_seam(24, 12)));
+  const auto welded = run_cli("info --json " + quoted(cracked));
+  ASSERT_EQ(welded.exit_code, 0) << welded.out;
+  const auto closed = nlohmann::json::parse(welded.out);
+  EXPECT_EQ(closed["genus"], 1);
+  EXPECT_EQ(closed["boundary_loops"], 0);
+  ASSERT_EQ(closed["warnings"].size(), 1u);
+  EXPECT_NE(closed["warnings"][0].get<std::string>().find("12 duplicate vertices welded"),
+            std::string::npos);
+
+  // Two triangles whose tips are 1e-9 apart: welded, they would pinch.
+  const Mesh tips =
+      triangle_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1e-9, 0, 0}, {-1, 0, 0}, {-1, -1, 0}},
+                    {{0, 1, 2}, {3, 4, 5}});
+  const std::string path = write_temp_file("tips.obj", write_obj(tips));
+  const auto result = run_cli("info --json " + quoted(path));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json["components"], 2);
+  EXPECT_NE(json["warnings"].dump().find("1 groups of near-duplicate vertices kept apart"),
+            std::string::npos)
+      << json["warnings"].dump();
+}
+
 TEST(CliInfo, HelpAndUsage) {
   EXPECT_EQ(run_cli("info --help").exit_code, 0);
   EXPECT_EQ(run_cli("convert --help").exit_code, 0);

@@ -1,9 +1,11 @@
 // Helpers for the mesh and I/O tests: bytes from text, temporary files, mesh comparison, and a
-// small GLB/glTF assembler so that malformed glTF can be generated in the test itself.
+// small GLB/glTF assembler so that malformed glTF can be generated in the test itself, and meshes
+// generated for the weld: parts side by side, a torus cracked along its seam.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -44,6 +46,36 @@ inline void expect_same_mesh(const Mesh& a, const Mesh& b, double relative) {
   const double tolerance = relative * bounding_box(a).diagonal();
   for (std::size_t v = 0; v < a.vertex_count(); ++v)
     ASSERT_LE((a.positions[v] - b.positions[v]).norm(), tolerance) << "vertex " << v;
+}
+
+// `b` added to `a`, moved by `offset`.
+inline Mesh joined(Mesh a, const Mesh& b, const Eigen::Vector3d& offset) {
+  const Index first = static_cast<Index>(a.vertex_count());
+  for (const Eigen::Vector3d& p : b.positions) a.add_vertex(p + offset);
+  for (std::size_t f = 0; f < b.face_count(); ++f) {
+    std::vector<Index> face(b.face(f).begin(), b.face(f).end());
+    for (Index& v : face) v += first;
+    a.add_face(face);
+  }
+  return a;
+}
+
+// A torus grid whose seam u = 2 pi has its own copy of the vertices at u = 0: cracked all around.
+inline Mesh torus_cracked_at_seam(int major, int minor) {
+  Mesh mesh;
+  for (int i = 0; i <= major; ++i)
+    for (int j = 0; j < minor; ++j) {
+      const double u = 2 * M_PI * i / major, v = 2 * M_PI * j / minor;
+      const double r = 1 + 0.3 * std::cos(v);
+      mesh.add_vertex({r * std::cos(u), r * std::sin(u), 0.3 * std::sin(v)});
+    }
+  const auto at = [&](int i, int j) { return static_cast<Index>(i * minor + j % minor); };
+  for (int i = 0; i < major; ++i)
+    for (int j = 0; j < minor; ++j) {
+      mesh.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.add_face({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
 }
 
 template <class T>

@@ -8,9 +8,13 @@
 #include "mesh/shapes.h"
 #include "mesh/topology.h"
 #include "mesh/validate.h"
+#include "mesh_test_util.h"
 
 namespace tessera {
 namespace {
+
+using test::joined;
+using test::torus_cracked_at_seam;
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
@@ -129,13 +133,139 @@ TEST(Validate, RefusesNonManifoldVertexNamingIt) {
       "vertex 0");
 }
 
-TEST(Validate, SaysWhenWeldingCausedATopologyError) {
-  // Two triangles whose tips nearly touch: welded, they pinch at one vertex.
+// Validated without welding and with the default weld, `mesh` must load both ways (a repair never
+// makes a valid mesh invalid); returns the default's report, and the welded mesh in `mesh`.
+ValidationReport expect_loads_with_and_without_welding(Mesh& mesh) {
+  Mesh unwelded = mesh;
+  EXPECT_NO_THROW(validate_mesh(unwelded, {.weld_tolerance = -1}));
+  ValidationReport report;
+  try {
+    report = validate_mesh(mesh);
+  } catch (const Error& e) {
+    ADD_FAILURE() << "refused with the default weld: " << e.what();
+  }
+  return report;
+}
+
+TEST(Validate, KeepsApartAWeldThatWouldPinchTwoSheets) {
+  // Two triangles whose tips nearly touch: welded, they would pinch at one vertex.
   Mesh mesh =
       triangle_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1e-9, 0, 0}, {-1, 0, 0}, {-1, -1, 0}},
                     {{0, 1, 2}, {3, 4, 5}});
-  expect_refused<TopologyError>(mesh, "after welding 1 near-duplicate vertices");
-  EXPECT_EQ(validate_mesh(mesh, {.weld_tolerance = -1}).components, 2u);
+  const ValidationReport report = expect_loads_with_and_without_welding(mesh);
+  EXPECT_EQ(report.components, 2u);
+  EXPECT_EQ(report.welded_vertices, 0u);
+  EXPECT_EQ(report.unwelded_groups, 1u);
+  const std::string warnings = all_warnings(report);
+  EXPECT_TRUE(contains(warnings, "1 groups of near-duplicate vertices kept apart")) << warnings;
+  EXPECT_TRUE(contains(warnings, "1 would make a pinched vertex")) << warnings;
+  EXPECT_TRUE(contains(warnings, "e.g. at vertex 0 at (0, 0, 0)")) << warnings;
+}
+
+TEST(Validate, LeavesClosedPartsTouchingAtAVertexApart) {
+  // Two spheres touching at one vertex (closer than the tolerance, and bit-identical): closed,
+  // nothing to repair, two components.
+  const Mesh sphere = icosphere(1);
+  const Eigen::Vector3d p = sphere.positions[0];  // its antipode is a vertex too
+  for (const double gap : {1e-9, 0.0}) {
+    Mesh mesh = joined(sphere, sphere, 2 * p * (1 + gap));
+    const ValidationReport report = expect_loads_with_and_without_welding(mesh);
+    EXPECT_EQ(report.components, 2u);
+    EXPECT_EQ(report.welded_vertices, 0u);
+    EXPECT_EQ(mesh.vertex_count(), 2 * sphere.vertex_count());
+  }
+}
+
+TEST(Validate, KeepsApartWeldsThatWouldMakeAnEdgeOfFourFaces) {
+  // Two squares, each two triangles, at right angles along a common diagonal 1e-9 apart: welded,
+  // the diagonal would have four faces.
+  Mesh mesh = triangle_mesh({{0, 0, 0},
+                             {1, 0, 0},
+                             {1, 1, 0},
+                             {0, 1, 0},
+                             {0, 0, 1e-9},
+                             {1, 1, 1e-9},
+                             {0.5, 0.5, 0.7},
+                             {0.5, 0.5, -0.7}},
+                            {{0, 1, 2}, {0, 2, 3}, {4, 6, 5}, {4, 5, 7}});
+  const ValidationReport report = expect_loads_with_and_without_welding(mesh);
+  EXPECT_EQ(report.components, 2u);
+  EXPECT_EQ(report.welded_vertices, 0u);
+  EXPECT_EQ(report.unwelded_groups, 2u);
+  EXPECT_TRUE(contains(all_warnings(report), "2 would make an edge of more than two faces"))
+      << all_warnings(report);
+}
+
+TEST(Validate, KeepsApartAWeldThatWouldMakeAMoebiusStrip) {
+  // A band of 8 quads whose last column lies on its first with a half twist: as given an open
+  // strip; welded, a Moebius strip.
+  Mesh mesh;
+  const int n = 8;
+  for (int i = 0; i <= n; ++i) {
+    const double u = 2 * M_PI * i / n, half = u / 2;
+    for (double s : {-0.3, 0.3}) {
+      const double r = 1 + s * std::cos(half);
+      mesh.add_vertex({r * std::cos(u), r * std::sin(u), s * std::sin(half)});
+    }
+  }
+  for (Index i = 0; i < n; ++i) mesh.add_face({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
+  const ValidationReport report = expect_loads_with_and_without_welding(mesh);
+  EXPECT_EQ(report.welded_vertices, 0u);
+  EXPECT_TRUE(contains(all_warnings(report), "would make a non-orientable surface"))
+      << all_warnings(report);
+  EXPECT_EQ(surface_topology(mesh, build_connectivity(mesh)).boundary_loops, 1u);
+}
+
+TEST(Validate, WeldsACrackClosed) {
+  Mesh mesh = torus_cracked_at_seam(24, 12);
+  const ValidationReport report = expect_loads_with_and_without_welding(mesh);
+  EXPECT_EQ(report.welded_vertices, 12u);
+  EXPECT_EQ(report.unwelded_groups, 0u);
+  const SurfaceTopology topology = surface_topology(mesh, build_connectivity(mesh));
+  EXPECT_EQ(topology.boundary_loops, 0u);
+  EXPECT_EQ(topology.genus, 1);
+}
+
+TEST(Validate, NeverCollapsesTheInterior) {
+  // A closed box thinner than the tolerance: welding its top to its bottom would fold it flat.
+  Mesh box = triangle_mesh({{0, 0, 0},
+                            {1, 0, 0},
+                            {1, 1, 0},
+                            {0, 1, 0},
+                            {0, 0, 1e-9},
+                            {1, 0, 1e-9},
+                            {1, 1, 1e-9},
+                            {0, 1, 1e-9}},
+                           {{0, 2, 1},
+                            {0, 3, 2},
+                            {4, 5, 6},
+                            {4, 6, 7},
+                            {0, 1, 5},
+                            {0, 5, 4},
+                            {1, 2, 6},
+                            {1, 6, 5},
+                            {2, 3, 7},
+                            {2, 7, 6},
+                            {3, 0, 4},
+                            {3, 4, 7}});
+  EXPECT_EQ(expect_loads_with_and_without_welding(box).welded_vertices, 0u);
+  EXPECT_EQ(box.vertex_count(), 8u);
+  // A very short interior edge of a sphere.
+  Mesh sphere = icosphere(2);
+  const auto face = sphere.face(0);
+  sphere.positions[face[1]] = sphere.positions[face[0]] + Eigen::Vector3d(1e-9, 0, 0);
+  const std::size_t vertices = sphere.vertex_count();
+  EXPECT_EQ(expect_loads_with_and_without_welding(sphere).welded_vertices, 0u);
+  EXPECT_EQ(sphere.vertex_count(), vertices);
+}
+
+TEST(Validate, StillRefusesAMeshInvalidWithoutWelding) {
+  // Three triangles on the edge 0-1, beside a square whose split diagonal welding closes.
+  const Mesh fin = triangle_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}},
+                                 {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  const Mesh mesh = joined(fin, square_with_split_diagonal(1e-9), {5, 0, 0});
+  expect_refused<TopologyError>(mesh, "edge 0-1");
+  expect_refused<TopologyError>(mesh, "shared by 3 faces");
 }
 
 TEST(Validate, ReorientsInconsistentFacesAndReportsThem) {

@@ -1,15 +1,18 @@
 #include "mesh/validate.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
+#include "base/disjoint_sets.h"
 #include "base/error.h"
 #include "mesh/connectivity.h"
 #include "mesh/describe.h"
 #include "mesh/edge_table.h"
 #include "mesh/geometry.h"
 #include "mesh/topology.h"
+#include "mesh/vertex_fans.h"
 #include "mesh/weld.h"
 
 namespace tessera {
@@ -56,15 +59,6 @@ void check_finite(const Mesh& mesh) {
                           "program that wrote the mesh");
 }
 
-std::size_t weld_vertices(Mesh& mesh, double tolerance) {
-  const std::vector<Index> target = weld_targets(mesh.positions, tolerance);
-  std::size_t welded = 0;
-  for (Index v = 0; v < target.size(); ++v) welded += target[v] != v;
-  if (welded > 0)
-    for (Index& v : mesh.face_vertices) v = target[v];
-  return welded;
-}
-
 bool has_repeated_vertex(std::span<const Index> face) {
   if (face.size() > 8) {  // large polygons: sorting, not comparing all pairs
     std::vector<Index> sorted(face.begin(), face.end());
@@ -106,10 +100,6 @@ void repair_faces(Mesh& mesh, ValidationReport& report) {
     for (Index f : kept_faces) kept.push_back(values[f]);
   }
   mesh = std::move(repaired);
-  if (mesh.face_count() == 0)
-    throw GeometryError("every face is degenerate (fewer than three distinct vertices" +
-                        std::string(report.welded_vertices ? ", after welding duplicates" : "") +
-                        "); the mesh has no surface");
 }
 
 // Counts zero-area faces; a mesh of nothing else has no surface to work on.
@@ -151,14 +141,23 @@ void reverse_face(Mesh& mesh, Index f) {
                mesh.face_vertices.begin() + mesh.face_offsets[f + 1]);
 }
 
+// How to orient the faces: per face whether to reverse it, or where orienting failed.
+struct Orientation {
+  std::vector<std::uint8_t> flip;  // per face
+  // A contradiction: the face reached with both orientations, from the first face of its component,
+  // across the edge of `corner`; kNoIndex when the surface is orientable.
+  Index face = kNoIndex, seed = kNoIndex, corner = kNoIndex;
+};
+
 // Breadth-first over the faces of each component: a neighbour across an edge must run along it in
 // the opposite direction. A contradiction means the surface is non-orientable. Within a component
 // the orientation of the majority of faces wins, so that few faces are flipped.
-std::size_t orient_faces(Mesh& mesh, const EdgeTable& table,
-                         const std::vector<Index>& corner_face) {
+Orientation orientation_of(const Mesh& mesh, const EdgeTable& table,
+                           const std::vector<Index>& corner_face) {
+  Orientation result;
+  result.flip.assign(mesh.face_count(), 0);
   std::vector<signed char> flip(mesh.face_count(), -1);  // -1 unvisited, 0 keep, 1 flip
   std::vector<Index> component;
-  std::size_t flipped = 0;
   for (Index seed = 0; seed < mesh.face_count(); ++seed) {
     if (flip[seed] >= 0) continue;
     flip[seed] = 0;
@@ -176,37 +175,203 @@ std::size_t orient_faces(Mesh& mesh, const EdgeTable& table,
           flip[g] = wanted;
           component.push_back(g);
         } else if (flip[g] != wanted) {
-          throw TopologyError(
-              "the surface is not orientable (like a Moebius strip or a Klein bottle): going "
-              "around "
-              "from face " +
-              std::to_string(seed) + " to " + describe_face(mesh, g) +
-              " gives it both orientations; Tessera needs an orientable "
-              "surface, cut it open or rebuild it");
+          result.face = g;
+          result.seed = seed;
+          result.corner = c;
+          return result;
         }
       }
     }
     std::size_t to_flip = 0;
     for (Index f : component) to_flip += flip[f];
     const bool invert = 2 * to_flip > component.size();
-    for (Index f : component) {
-      if (static_cast<bool>(flip[f]) != invert) {
-        reverse_face(mesh, f);
-        ++flipped;
-      }
-    }
+    for (Index f : component) result.flip[f] = static_cast<bool>(flip[f]) != invert;
+  }
+  return result;
+}
+
+std::size_t orient_faces(Mesh& mesh, const EdgeTable& table,
+                         const std::vector<Index>& corner_face) {
+  const Orientation orientation = orientation_of(mesh, table, corner_face);
+  if (orientation.face != kNoIndex)
+    throw TopologyError(
+        "the surface is not orientable (like a Moebius strip or a Klein bottle): going around "
+        "from face " +
+        std::to_string(orientation.seed) + " to " + describe_face(mesh, orientation.face) +
+        " gives it both orientations; Tessera needs an orientable surface, cut it open or "
+        "rebuild it");
+  std::size_t flipped = 0;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    if (!orientation.flip[f]) continue;
+    reverse_face(mesh, f);
+    ++flipped;
   }
   return flipped;
 }
 
-void add_warnings(const Mesh& mesh, const ValidationOptions& options, Index first_zero_area,
-                  ValidationReport& r) {
+// Welding (validate.h) closes cracks: only vertices on the boundary of the mesh as given are
+// welded, so that a weld never collapses the interior (a short edge, a thin closed part). Even so
+// a weld can join what should stay apart (two sheets along an edge, two parts at a point): every
+// group of vertices welded into one whose weld breaks the surface is kept apart, and the mesh
+// stays as it was there. A repair never turns a valid mesh into an invalid one.
+enum class WeldBreak { non_manifold_edge, pinched_vertex, non_orientable };
+constexpr std::size_t kWeldBreaks = 3;
+
+struct BreakAt {
+  Index vertex = kNoIndex;
+  WeldBreak reason = WeldBreak::non_manifold_edge;
+};
+
+struct Welds {
+  std::vector<Index> target;   // per vertex: the vertex it is welded into, or itself
+  std::size_t kept_apart = 0;  // groups of vertices left unwelded
+  std::array<std::size_t, kWeldBreaks> kept_apart_for{};  // per WeldBreak
+  std::string example;  // one of them, as describe_vertex() names it in the mesh as given
+};
+
+std::vector<std::uint8_t> boundary_vertices(const Mesh& mesh) {
+  const EdgeTable table = build_edge_table(mesh);
+  std::vector<std::uint8_t> on_boundary(mesh.vertex_count(), 0);
+  for (Index e = 0; e < table.edge_count(); ++e) {
+    const auto [a, b] = table.edge_vertices[e];
+    if (table.corners(e).size() == 1 && a != b) on_boundary[a] = on_boundary[b] = 1;
+  }
+  return on_boundary;
+}
+
+// weld_targets() among the boundary vertices.
+std::vector<Index> boundary_weld_targets(const Mesh& mesh, double tolerance) {
+  const std::vector<std::uint8_t> on_boundary = boundary_vertices(mesh);
+  std::vector<Index> candidates;
+  std::vector<Eigen::Vector3d> positions;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    if (!on_boundary[v]) continue;
+    candidates.push_back(v);
+    positions.push_back(mesh.positions[v]);
+  }
+  std::vector<Index> target(mesh.vertex_count());
+  for (Index v = 0; v < target.size(); ++v) target[v] = v;
+  const std::vector<Index> local = weld_targets(positions, tolerance);
+  for (Index k = 0; k < local.size(); ++k) target[candidates[k]] = candidates[local[k]];
+  return target;
+}
+
+void apply_welds(Mesh& mesh, const std::vector<Index>& target) {
+  for (Index& v : mesh.face_vertices) v = target[v];
+}
+
+// The vertices where `mesh` (repaired, not renumbered) is no surface: both ends of non-manifold
+// edges, pinched vertices and, on a manifold, the edge where orienting it fails.
+std::vector<BreakAt> surface_breaks(const Mesh& mesh) {
+  std::vector<BreakAt> breaks;
+  const EdgeTable table = build_edge_table(mesh);
+  for (Index e = 0; e < table.edge_count(); ++e)
+    if (table.corners(e).size() > 2)
+      for (Index v : table.edge_vertices[e]) breaks.push_back({v, WeldBreak::non_manifold_edge});
+  const std::vector<Index> fans = vertex_fan_counts(mesh, table);
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    if (fans[v] > 1) breaks.push_back({v, WeldBreak::pinched_vertex});
+  if (!breaks.empty()) return breaks;
+  const std::vector<Index> corner_face = corner_faces(mesh);
+  const Orientation orientation = orientation_of(mesh, table, corner_face);
+  if (orientation.face == kNoIndex) return breaks;
+  const Index c = orientation.corner;
+  for (Index v : {mesh.face_vertices[c], mesh.face_vertices[mesh.next_corner(c, corner_face[c])]})
+    breaks.push_back({v, WeldBreak::non_orientable});
+  return breaks;
+}
+
+// Per vertex, the smallest vertex of its connected component (faces sharing a vertex).
+std::vector<Index> vertex_components(const Mesh& mesh) {
+  DisjointSets sets(mesh.vertex_count());
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    for (Index v : mesh.face(f)) sets.join(v, mesh.face(f)[0]);
+  std::vector<Index> component(mesh.vertex_count());
+  for (Index v = 0; v < component.size(); ++v) component[v] = static_cast<Index>(sets.find(v));
+  return component;
+}
+
+// Marks (per group, by its target; WeldBreak + 1, 0 for none) the groups of welded vertices at
+// the breaks; if no break is at one, those in the components of the breaks: a part without welds
+// is as given there.
+std::vector<std::uint8_t> groups_at_breaks(const Mesh& welded, const std::vector<Index>& target,
+                                           const std::vector<BreakAt>& breaks) {
+  std::vector<Index> size(target.size(), 0);
+  for (Index v : target) ++size[v];
+  std::vector<std::uint8_t> mark(target.size(), 0);
+  bool any = false;
+  for (const BreakAt& b : breaks) {
+    if (size[b.vertex] < 2 || mark[b.vertex]) continue;
+    mark[b.vertex] = static_cast<std::uint8_t>(b.reason) + 1;
+    any = true;
+  }
+  if (any) return mark;
+  const std::vector<Index> component = vertex_components(welded);
+  std::vector<std::uint8_t> broken(target.size(), 0);  // per component, WeldBreak + 1
+  for (const BreakAt& b : breaks)
+    if (!broken[component[b.vertex]])
+      broken[component[b.vertex]] = static_cast<std::uint8_t>(b.reason) + 1;
+  for (Index v = 0; v < target.size(); ++v)
+    if (size[v] > 1) mark[v] = broken[component[v]];
+  return mark;
+}
+
+// Keeps apart the marked groups; false if none is marked.
+bool keep_apart(const Mesh& mesh, const std::vector<std::uint8_t>& mark, Welds& welds) {
+  bool any = false;
+  for (Index v = 0; v < mark.size(); ++v) {
+    if (!mark[v]) continue;
+    any = true;
+    ++welds.kept_apart;
+    ++welds.kept_apart_for[mark[v] - 1];
+    if (welds.example.empty()) welds.example = describe_vertex(mesh, v);
+  }
+  for (Index v = 0; v < welds.target.size(); ++v)
+    if (mark[welds.target[v]]) welds.target[v] = v;
+  return any;
+}
+
+// The welds of boundary vertices closer than `tolerance`, without those that break the surface:
+// welded and repaired, the mesh is checked, the groups at its breaks are kept apart, and again,
+// until it has no break or no group is at one (the mesh's own breaks, which validation reports).
+Welds weld_without_breaking(const Mesh& mesh, double tolerance) {
+  Welds welds;
+  welds.target = boundary_weld_targets(mesh, tolerance);
+  while (true) {
+    Mesh welded = mesh;
+    apply_welds(welded, welds.target);
+    ValidationReport ignored;
+    repair_faces(welded, ignored);
+    const std::vector<BreakAt> breaks = surface_breaks(welded);
+    if (breaks.empty() || !keep_apart(mesh, groups_at_breaks(welded, welds.target, breaks), welds))
+      return welds;
+  }
+}
+
+std::string kept_apart_sentence(const Welds& welds) {
+  static const char* const kWhat[kWeldBreaks] = {"an edge of more than two faces",
+                                                 "a pinched vertex", "a non-orientable surface"};
+  std::string why;
+  for (std::size_t k = 0; k < kWeldBreaks; ++k) {
+    if (!welds.kept_apart_for[k]) continue;
+    why += std::string(why.empty() ? "" : ", ") + std::to_string(welds.kept_apart_for[k]) +
+           " would make " + kWhat[k];
+  }
+  return std::to_string(welds.kept_apart) +
+         " groups of near-duplicate vertices kept apart, since welding them would break the "
+         "surface (" +
+         why + "), e.g. at " + welds.example + " as given; the mesh is as given there";
+}
+
+void add_warnings(const Mesh& mesh, const ValidationOptions& options, const Welds& welds,
+                  Index first_zero_area, ValidationReport& r) {
   auto add = [&](std::size_t count, const std::string& sentence) {
     if (count > 0) r.warnings.push_back(std::to_string(count) + " " + sentence);
   };
   add(r.welded_vertices, "duplicate vertices welded (closer than " +
                              format_number(options.weld_tolerance) +
                              " x the bounding-box diagonal)");
+  if (welds.kept_apart > 0) r.warnings.push_back(kept_apart_sentence(welds));
   add(r.dropped_faces, "degenerate faces dropped (fewer than three distinct vertices)");
   add(r.collapsed_faces, "faces with repeated corners collapsed to fewer corners");
   add(r.unreferenced_vertices, "vertices in no face removed");
@@ -225,33 +390,32 @@ ValidationReport validate_mesh(Mesh& mesh, const ValidationOptions& options) {
   ValidationReport report;
   check_arrays(mesh);
   check_finite(mesh);
-  if (options.weld_tolerance >= 0)
-    report.welded_vertices =
-        weld_vertices(mesh, options.weld_tolerance * bounding_box(mesh).diagonal());
+  Welds welds;
+  if (options.weld_tolerance >= 0) {
+    welds = weld_without_breaking(mesh, options.weld_tolerance * bounding_box(mesh).diagonal());
+    for (Index v = 0; v < welds.target.size(); ++v) report.welded_vertices += welds.target[v] != v;
+    report.unwelded_groups = welds.kept_apart;
+    apply_welds(mesh, welds.target);
+  }
   repair_faces(mesh, report);
+  if (mesh.face_count() == 0)
+    throw GeometryError("every face is degenerate (fewer than three distinct vertices" +
+                        std::string(report.welded_vertices ? ", after welding duplicates" : "") +
+                        "); the mesh has no surface");
   report.unreferenced_vertices = remove_unreferenced_vertices(mesh) - report.welded_vertices;
   Index first_zero_area = kNoIndex;
   report.zero_area_faces =
       count_zero_area_faces(mesh, options.zero_area_tolerance, first_zero_area);
 
-  Connectivity connectivity;
-  try {
-    const std::vector<Index> corner_face = corner_faces(mesh);
-    const EdgeTable table = build_edge_table(mesh);
-    check_manifold_edges(mesh, table, corner_face);
-    report.flipped_faces = orient_faces(mesh, table, corner_face);
-    // Non-manifold vertices are the last thing to find; build_connectivity() names them.
-    connectivity = build_connectivity(mesh);
-  } catch (const TopologyError& e) {
-    // Welding joins what was apart; the user should know it may be the cause.
-    if (report.welded_vertices == 0) throw;
-    throw TopologyError(std::string(e.what()) + " (this is after welding " +
-                        std::to_string(report.welded_vertices) +
-                        " near-duplicate vertices; welding can be turned off with a negative "
-                        "weld tolerance, --weld-tolerance -1)");
-  }
+  // Welding breaks nothing (weld_without_breaking()): what is refused here is the mesh's own.
+  const std::vector<Index> corner_face = corner_faces(mesh);
+  const EdgeTable table = build_edge_table(mesh);
+  check_manifold_edges(mesh, table, corner_face);
+  report.flipped_faces = orient_faces(mesh, table, corner_face);
+  // Non-manifold vertices are the last thing to find; build_connectivity() names them.
+  const Connectivity connectivity = build_connectivity(mesh);
   report.components = connected_components(mesh, connectivity).count;
-  add_warnings(mesh, options, first_zero_area, report);
+  add_warnings(mesh, options, welds, first_zero_area, report);
   return report;
 }
 

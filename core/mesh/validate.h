@@ -3,7 +3,10 @@
 //
 // In:  any Mesh.
 // Out: the mesh repaired in place, and a report of what was repaired or is worth knowing:
-//      - near-duplicate vertices welded (closer than weld_tolerance x bounding-box diagonal),
+//      - near-duplicate vertices on the boundary welded (closer than weld_tolerance x bounding-box
+//        diagonal), except where welding would make the mesh non-manifold or non-orientable:
+//        those are kept apart (a warning names one), so that any mesh valid without welding is
+//        valid with it,
 //      - faces with fewer than three distinct vertices dropped, repeated corners collapsed,
 //      - vertices in no face removed,
 //      - inconsistently oriented faces flipped (breadth-first from the majority orientation),
@@ -32,6 +35,7 @@ struct ValidationOptions {
 
 struct ValidationReport {
   std::size_t welded_vertices = 0;        // merged into another vertex
+  std::size_t unwelded_groups = 0;        // near-duplicates kept apart: welding breaks the surface
   std::size_t unreferenced_vertices = 0;  // in no face, removed
   std::size_t dropped_faces = 0;          // fewer than three distinct vertices
   std::size_t collapsed_faces = 0;        // repeated consecutive corners merged
