@@ -177,6 +177,7 @@ class RotationFinder {
     std::map<Element, std::vector<const Centre*>> by_half_turn;
     for (const Centre& c : centres) by_half_turn[c.half_turn].push_back(&c);
     const Word wx_inverse = words_.word(words_.inverse(x));
+    pairs_with_.clear();
     // A reference direction at P1: towards D0's other corner on the side M0 N0.
     const Point reference = cover_.corner(CoverTriangle{}, apex == kN ? kM : kN);
     for (const Centre& c2 : centres) {
@@ -185,9 +186,14 @@ class RotationFinder {
       if (sector < 0) sector += 2 * std::numbers::pi;
       if (sector >= 2 * std::numbers::pi / sectors - 1e-9) continue;
       const Element y = c2.half_turn;
-      const Word wr = words_.word(source_.times(y, wx_inverse));
-      if (element_order(source_, wr) != static_cast<std::size_t>(target_.p)) continue;
-      if (rotation_images(target_group_, words_, x, y).empty()) continue;
+      // Whether S -> x, R S -> y extends to an isomorphism depends on y alone: asked once per y
+      // (a large disk holds many lifts of each half-turn).
+      const auto [known, added] = pairs_with_.try_emplace(y, false);
+      if (added)
+        known->second = element_order(source_, words_.word(source_.times(y, wx_inverse))) ==
+                            static_cast<std::size_t>(target_.p) &&
+                        !rotation_images(target_group_, words_, x, y).empty();
+      if (!known->second) continue;
       const Isometry y2 = about(g, c2.point, std::numbers::pi);
       for (const Centre* c3 : by_half_turn[y]) {
         if (same_point(g, c3->point, c2.point)) continue;
@@ -251,6 +257,7 @@ class RotationFinder {
   const Presentation& target_;
   const FiniteGroup& target_group_;
   PairingLimits limits_;
+  std::map<Element, bool> pairs_with_;  // per half-turn y, for the x of the current apex
   Cover cover_;
   PairingSearch result_;
 };
