@@ -50,16 +50,24 @@ void print_layout_help() {
       "  --json               one JSON object on stdout: singularities, graph_edges, conflicts,\n"
       "                       patches, angle_rsd (percent), valid, objective, seconds (per\n"
       "                       stage), and alpha, ports, virtual_ports, nodes, arcs,\n"
-      "                       solver, matching_status, lower_bound, curved_edges,\n"
+      "                       solver, matching_status, matching_stopped_by (null,\n"
+      "                       node_limit, time_guard), p1_nodes, lower_bound, curved_edges,\n"
       "                       twin_edges, loop_conflicts,\n"
+      "                       trace_steps, trace_crossings,\n"
       "                       length_limit, length_doublings, unmatchable_ports,\n"
       "                       folded_singularities,\n"
       "                       average_separatrix_length, problems (the first 12),\n"
       "                       problem_count\n"
       "  --max-trace-steps N  faces crossed by all separatrices together (default 20000000)\n"
-      "  --max-trace-seconds S  time for growing the separatrices (default 60)\n"
-      "  --max-solve-seconds S  time for program P1, its loop rounds included (default 60; the\n"
-      "                       best matching found is used)\n"
+      "  --max-trace-crossings N  crossings they find together (default 20000000)\n"
+      "  --max-solve-nodes N  branch-and-bound nodes of program P1, its loop rounds included\n"
+      "                       (default 5000; at the limit the best matching found is used,\n"
+      "                       matching_stopped_by says node_limit)\n"
+      "  --max-trace-seconds S, --max-solve-seconds S\n"
+      "                       time guards (default 1800 each), far above what the limits above\n"
+      "                       take: the counts make the result the same on every run and\n"
+      "                       machine; a result a guard stops depends on the machine's load, and\n"
+      "                       says so (tracing: an error; P1: matching_stopped_by time_guard)\n"
       "%s%s\n"
       "Exit codes: 0 ok (also for a layout the checker rejects: 'valid' says so), 1 internal\n"
       "error, 2 bad input (the message says what and where).\n",
@@ -75,6 +83,8 @@ layout::LayoutOptions layout_options(const ParsedArgs& parsed) {
     throw UsageError("--length-factor expects a number in (0, 1000]");
   Limits& limits = options.limits;
   limits.max_trace_steps = parsed.count("--max-trace-steps", limits.max_trace_steps);
+  limits.max_trace_crossings = parsed.count("--max-trace-crossings", limits.max_trace_crossings);
+  limits.max_solve_nodes = parsed.count("--max-solve-nodes", limits.max_solve_nodes);
   limits.max_trace_seconds = parsed.number("--max-trace-seconds", limits.max_trace_seconds);
   limits.max_solve_seconds = parsed.number("--max-solve-seconds", limits.max_solve_seconds);
   if (!(limits.max_trace_seconds > 0) || !(limits.max_solve_seconds > 0))
@@ -86,8 +96,10 @@ layout::LayoutOptions layout_options(const ParsedArgs& parsed) {
 // matching (the ports none covers, and the folded singular rings that leave singularities with
 // fewer ports than their valence).
 std::string no_matching_text(const nlohmann::ordered_json& json) {
-  if (json["matching_status"] == "time_limit" && json["objective"].is_null())
-    return "  P1 found no matching within its time: raise --max-solve-seconds\n";
+  if (json["matching_status"] == "node_limit")
+    return "  P1 found no matching within its node limit: raise --max-solve-nodes\n";
+  if (json["matching_status"] == "time_limit")
+    return "  P1 found no matching before its time guard: raise --max-solve-seconds\n";
   const auto list = [](const nlohmann::ordered_json& items) {
     std::string text;
     for (std::size_t k = 0; k < items.size() && k < 12; ++k)
@@ -120,6 +132,13 @@ std::string layout_text(const nlohmann::ordered_json& json) {
       json["patches"].get<int>(), json["nodes"].get<int>(), json["arcs"].get<int>(),
       json["angle_rsd"].get<double>(), json["valid"].get<bool>() ? "valid" : "INVALID");
   std::string result = text;
+  if (json["matching_stopped_by"] == "node_limit")
+    result += "  P1 stopped at its node limit (" + json["p1_nodes"].dump() +
+              " nodes; --max-solve-nodes): the best matching found, the same on every run\n";
+  if (json["matching_stopped_by"] == "time_guard")
+    result +=
+        "  P1 stopped at its time guard (--max-solve-seconds): this result depends on the "
+        "machine's speed and load, another run may differ\n";
   result += no_matching_text(json);
   for (const auto& problem : json["problems"]) result += "  " + problem.get<std::string>() + "\n";
   if (json["problem_count"].get<std::size_t>() > json["problems"].size())
@@ -163,7 +182,8 @@ int layout_command(const Args& args) {
   std::set<std::string> values = mesh_input_options();
   values.merge(field_input_options());
   values.insert({"--alpha", "--rho", "--length-factor", "--h", "-o", "--ply", "--solver",
-                 "--export-p1", "--max-trace-steps", "--max-trace-seconds", "--max-solve-seconds"});
+                 "--export-p1", "--max-trace-steps", "--max-trace-crossings", "--max-trace-seconds",
+                 "--max-solve-nodes", "--max-solve-seconds"});
   const ParsedArgs parsed = parse_args(args, values, {"--json", "--help", "-h"}, "layout");
   if (parsed.has("--help") || parsed.has("-h")) {
     print_layout_help();

@@ -71,15 +71,59 @@ TEST(CliLayout, BadOptionsExitWithTwo) {
   const auto limited = run_cli("layout " + quoted(path) + " --max-trace-steps 10", true);
   EXPECT_EQ(limited.exit_code, 2);
   EXPECT_NE(limited.out.find("--max-trace-steps"), std::string::npos) << limited.out;
+  const auto crossings = run_cli("layout " + quoted(path) + " --max-trace-crossings 3", true);
+  EXPECT_EQ(crossings.exit_code, 2);
+  EXPECT_NE(crossings.out.find("separatrix tracing (crossings found) has 4, above the limit of 3; "
+                               "raise it with --max-trace-crossings"),
+            std::string::npos)
+      << crossings.out;
+  const auto guard = run_cli("layout " + quoted(path) + " --max-trace-seconds 1e-9", true);
+  EXPECT_EQ(guard.exit_code, 2);
+  EXPECT_NE(guard.out.find("passed its time guard"), std::string::npos) << guard.out;
+  EXPECT_NE(guard.out.find("raise it with --max-trace-seconds"), std::string::npos) << guard.out;
 }
 
-// A P1 stopped by its time before any matching: the text says so and names the option to raise.
+// `tessera layout --json` without the seconds, which alone may differ from run to run.
+nlohmann::json layout_without_seconds(const std::string& arguments) {
+  const auto result = run_cli("layout --json " + arguments);
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  nlohmann::json json = nlohmann::json::parse(result.out);
+  json.erase("seconds");
+  return json;
+}
+
+// P1 stopped by its node limit: the best matching found, the same on every run, and said so.
+TEST(CliLayout, ANodeLimitStopsP1TheSameWayOnEveryRun) {
+  const std::string path = write_temp_file("part.obj", write_obj(mechanical_part(3)));
+  const std::string arguments = quoted(path) + " --alpha 0 --max-solve-nodes 1";
+  const nlohmann::json first = layout_without_seconds(arguments);
+  EXPECT_EQ(first["matching_status"], "feasible");
+  EXPECT_EQ(first["matching_stopped_by"], "node_limit");
+  EXPECT_EQ(first, layout_without_seconds(arguments));
+  const auto text = run_cli("layout " + arguments);
+  EXPECT_NE(text.out.find("P1 stopped at its node limit"), std::string::npos) << text.out;
+  // Without the limit: proven optimal, stopped by nothing, and again the same on every run.
+  const nlohmann::json full = layout_without_seconds(quoted(path) + " --alpha 0");
+  EXPECT_EQ(full["matching_status"], "optimal");
+  EXPECT_TRUE(full["matching_stopped_by"].is_null());
+  EXPECT_GT(full["p1_nodes"].get<int>(), 1);
+  EXPECT_LT(full["objective"].get<double>(), first["objective"].get<double>() + 1e-9);
+  EXPECT_EQ(full, layout_without_seconds(quoted(path) + " --alpha 0"));
+}
+
+// A P1 stopped by its time guard before any matching: the text says so, that the result depends on
+// the machine, and names the option to raise.
 TEST(CliLayout, NoMatchingWithinTheSolveTimeIsExplained) {
   const std::string path = write_temp_file("part.obj", write_obj(mechanical_part(3)));
-  const auto result = run_cli("layout " + quoted(path) + " --alpha 0 --max-solve-seconds 1e-9");
+  const std::string arguments = quoted(path) + " --alpha 0 --max-solve-seconds 1e-9";
+  const auto result = run_cli("layout " + arguments);
   ASSERT_EQ(result.exit_code, 0) << result.out;
   EXPECT_NE(result.out.find("P1 time_limit, objective null"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("P1 stopped at its time guard"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("depends on the machine's speed and load"), std::string::npos)
+      << result.out;
   EXPECT_NE(result.out.find("raise --max-solve-seconds"), std::string::npos) << result.out;
+  EXPECT_EQ(layout_without_seconds(arguments)["matching_stopped_by"], "time_guard");
 }
 
 }  // namespace

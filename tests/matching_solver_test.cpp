@@ -332,11 +332,36 @@ TEST(MatchingExact, ATimeLimitReturnsTheBestWithAProvenBound) {
   EXPECT_LT(r.seconds, 2.0);
   if (r.status == SolveStatus::optimal) GTEST_SKIP() << "solved within 0.05 s";
   ASSERT_TRUE(r.status == SolveStatus::feasible || r.status == SolveStatus::time_limit);
+  EXPECT_EQ(r.stopped_by, StopReason::time_guard);
   EXPECT_TRUE(std::isfinite(r.lower_bound));
   if (r.has_solution()) {
     EXPECT_TRUE(check_solution(p, r.edges).feasible);
     EXPECT_LE(r.lower_bound, r.objective);
     EXPECT_GT(r.gap(), 0.0);
+  }
+}
+
+// The node limit is work: the same result on every run, and said so; without it, the optimum.
+TEST(MatchingExact, ANodeLimitStopsTheSameWayOnEveryRun) {
+  SyntheticLayoutSpec spec;
+  spec.singularity_pairs = 40;
+  spec.max_length = 10.0;
+  spec.alpha = 0.0;
+  const MatchingProblem p = synthetic_layout_instance(spec);
+  const MatchingResult optimum = solve_matching(p, SolverKind::exact, 600.0);
+  ASSERT_EQ(optimum.status, SolveStatus::optimal);
+  EXPECT_EQ(optimum.stopped_by, StopReason::none);
+  ASSERT_GT(optimum.nodes, 2u) << "the instance needs a search";
+  for (SolverKind kind : {SolverKind::exact, SolverKind::glpk}) {
+    const MatchingResult a = solve_matching(p, kind, {600.0, 2});
+    const MatchingResult b = solve_matching(p, kind, {600.0, 2});
+    EXPECT_EQ(a.stopped_by, StopReason::node_limit) << to_string(kind);
+    EXPECT_TRUE(a.status == SolveStatus::feasible || a.status == SolveStatus::node_limit)
+        << to_string(a.status);
+    EXPECT_EQ(a.edges, b.edges);
+    EXPECT_EQ(a.lower_bound, b.lower_bound);
+    EXPECT_EQ(a.nodes, b.nodes);
+    if (a.has_solution()) EXPECT_GE(a.objective, optimum.objective - 1e-9);
   }
 }
 

@@ -94,14 +94,18 @@ void SeparatrixGrowth::grow(double length_limit, const Progress& progress) {
       progress.step("separatrices", std::min(1.0, cursors_[line].length / length_limit));
     }
   }
+  check_clock(start);
   seconds_ += seconds_since(start);
 }
 
 void SeparatrixGrowth::check_clock(Clock::time_point start) const {
   if (seconds_ + seconds_since(start) <= options_.max_seconds) return;
-  throw LimitError("growing the separatrices ran longer than " +
+  throw LimitError("growing the separatrices passed its time guard of " +
                    format_seconds(options_.max_seconds) + " after " + std::to_string(steps_) +
-                   " faces crossed; raise the limit with --max-trace-seconds or lower L_max");
+                   " faces crossed and " + std::to_string(crossings_found_) +
+                   " crossings found, below their limits (--max-trace-steps, "
+                   "--max-trace-crossings); the guard depends on the machine's speed and load, "
+                   "not on the input: raise it with --max-trace-seconds");
 }
 
 Index SeparatrixGrowth::port_arriving(Index face, Index vertex,
@@ -227,6 +231,8 @@ void SeparatrixGrowth::discover(const SeparatrixPiece& a, const SeparatrixPiece&
   m.direction_a = first.direction;
   m.direction_b = second.direction;
   if (!is_new(m)) return;
+  check_limit(crossings_found_ + 1, options_.max_crossings, "separatrix tracing (crossings found)",
+              "--max-trace-crossings");
   events_.push(
       {tick_of(m.time()), 1, m.line_a, m.line_b, tick_of(m.length_a), crossings_found_++, m});
 }

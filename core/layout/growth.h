@@ -30,9 +30,10 @@
 namespace tessera::layout {
 
 struct GrowthOptions {
-  double rho = 10;                                   // spiral test threshold (Sec. 6.8)
-  std::size_t max_steps = Limits{}.max_trace_steps;  // faces entered by all separatrices
-  double max_seconds = Limits{}.max_trace_seconds;   // wall time of all grow() calls
+  double rho = 10;                                           // spiral test threshold (Sec. 6.8)
+  std::size_t max_steps = Limits{}.max_trace_steps;          // faces entered by all separatrices
+  std::size_t max_crossings = Limits{}.max_trace_crossings;  // crossings found by all of them
+  double max_seconds = Limits{}.max_trace_seconds;  // time guard: wall time of all grow() calls
 };
 
 class SeparatrixGrowth {
@@ -42,11 +43,14 @@ class SeparatrixGrowth {
   SeparatrixGrowth(const Charts& charts, Ports ports, const GrowthOptions& options);
 
   // Grows every separatrix not yet stopped to `length_limit`. Throws LimitError when the steps of
-  // all separatrices exceed options.max_steps or the time options.max_seconds, CancelledError
-  // when cancelled.
+  // all separatrices exceed options.max_steps, their crossings options.max_crossings (the work,
+  // the same on every machine), or the time guard options.max_seconds; CancelledError when
+  // cancelled.
   void grow(double length_limit, const Progress& progress);
 
   const PortGraph& graph() const { return graph_; }
+  std::size_t steps() const { return steps_; }
+  std::size_t crossings() const { return crossings_found_; }
   PortGraph take_graph() { return std::move(graph_); }
 
  private:

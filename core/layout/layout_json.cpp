@@ -45,6 +45,11 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   json["arcs"] = layout.check.arcs.size();
   json["solver"] = matching::to_string(layout.solver);
   json["matching_status"] = matching::to_string(layout.matching.status);
+  json["matching_stopped_by"] =
+      layout.matching.stopped_by == matching::StopReason::none
+          ? nlohmann::ordered_json(nullptr)
+          : nlohmann::ordered_json(matching::to_string(layout.matching.stopped_by));
+  json["p1_nodes"] = layout.p1_nodes;
   json["lower_bound"] = finite_or_null(layout.matching.lower_bound);
   json["curved_edges"] = graph.curved_edges;
   json["twin_edges"] = graph.twin_edges;
@@ -54,6 +59,8 @@ nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& l
   json["rounds"] = layout.rounds();
   json["reused_rounds"] = layout.reused_rounds;
   json["solved_before"] = layout.solved_before;
+  json["trace_steps"] = graph.trace_steps;
+  json["trace_crossings"] = graph.trace_crossings;
   json["length_limit"] = g.length_limit;
   json["length_doublings"] = graph.length_doublings;
   json["unmatchable_ports"] = graph.unmatchable_ports;

@@ -47,14 +47,16 @@ namespace {
 // crossings pending, those seen, the spiral test's last crossings) goes when it returns.
 void grow_graph(const Charts& charts, const LayoutOptions& options, const Progress& progress,
                 LayoutGraph& result) {
-  SeparatrixGrowth growth(
-      charts, find_ports(charts),
-      {options.rho, options.limits.max_trace_steps, options.limits.max_trace_seconds});
+  SeparatrixGrowth growth(charts, find_ports(charts),
+                          {options.rho, options.limits.max_trace_steps,
+                           options.limits.max_trace_crossings, options.limits.max_trace_seconds});
   double length_limit =
       options.length_factor * bounding_box(charts.mesh).diagonal() / charts.param.h;
   while (true) {
     growth.grow(length_limit, progress);
     result.graph = growth.graph();
+    result.trace_steps = growth.steps();
+    result.trace_crossings = growth.crossings();
     const std::size_t candidates = result.graph.edges.size();
     result.arcs = keep_edges_with_arcs(charts, result.graph);
     result.curved_edges = candidates - result.graph.edges.size();
@@ -111,15 +113,15 @@ void lay_out(const Charts& charts, const LayoutGraph& graph, const ResolveCache&
   clock.stage_done("check");
 }
 
-void solve_p1(const matching::MatchingProblem& problem, double solve_seconds,
+void solve_p1(const matching::MatchingProblem& problem, const matching::SolveLimits& limits,
               const Progress& progress, ResolveCache& cache, StageClock& clock,
               QuadLayout& layout) {
-  layout.matching =
-      matching::solve_matching(problem, layout.solver, solve_seconds, progress, &cache.p1);
+  layout.matching = matching::solve_matching(problem, layout.solver, limits, progress, &cache.p1);
   clock.stage_done("P1");
 }
 
-// Rounds of P1 after a failed check (loop_pairs()); all rounds share the solver's time limit.
+// Rounds of P1 after a failed check (loop_pairs()); all rounds share the solver's node limit and
+// time guard.
 constexpr int kMaxLoopRounds = 8;
 
 // Ch. 5 in rounds: while the check finds patches that are no disks, the chosen pairs that close
@@ -153,20 +155,23 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
   const auto seconds_left = [&] {
     return std::chrono::duration<double>(deadline - Clock::now()).count();
   };
-  // Every round ended with a proven optimum or infeasibility and none was left out for the
-  // deadline: the result is the same on every run (and goes into cache.solved).
-  const auto proven = [](const matching::MatchingResult& m) {
-    return m.status == matching::SolveStatus::optimal ||
-           m.status == matching::SolveStatus::infeasible;
+  std::uint64_t nodes_used = 0;
+  const auto limits_left = [&] {
+    return matching::SolveLimits(
+        seconds_left(), limits.max_solve_nodes - std::min(nodes_used, limits.max_solve_nodes));
   };
-  solve_p1(problem, seconds_left(), progress, cache, clock, layout);
+  // Every round ended with a proven optimum or infeasibility and none was left out for a limit:
+  // the result goes into cache.solved.
+  const auto proven = [](const matching::MatchingResult& m) {
+    return (m.status == matching::SolveStatus::optimal ||
+            m.status == matching::SolveStatus::infeasible) &&
+           m.stopped_by == matching::StopReason::none;
+  };
+  solve_p1(problem, limits_left(), progress, cache, clock, layout);
+  nodes_used += layout.matching.nodes;
   bool repeatable = proven(layout.matching);
   bool laid_out = false;  // the stages ran for this layout's matching (or gave the cache's last)
   for (int round = 0; round < kMaxLoopRounds && layout.matching.has_solution(); ++round) {
-    if (seconds_left() <= 0) {
-      repeatable = false;
-      break;
-    }
     auto failed = cache.failed.find(layout.matching.edges);
     laid_out = failed == cache.failed.end();
     if (laid_out) {
@@ -178,6 +183,16 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
     }
     const std::vector<EdgePair>& pairs = failed->second;
     if (pairs.empty()) break;
+    // Out of nodes or past the guard, the rounds stop; the layout says which stopped them.
+    const matching::StopReason stop = seconds_left() <= 0 ? matching::StopReason::time_guard
+                                      : nodes_used >= limits.max_solve_nodes
+                                          ? matching::StopReason::node_limit
+                                          : matching::StopReason::none;
+    if (stop != matching::StopReason::none) {
+      layout.matching.stopped_by = std::max(layout.matching.stopped_by, stop);
+      repeatable = false;
+      break;
+    }
     add_loop_conflicts(pairs, problem);
     QuadLayout next;
     next.alpha = alpha;
@@ -185,12 +200,14 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
     next.reused_rounds = layout.reused_rounds + (laid_out ? 0 : 1);
     next.loop_rounds = layout.loop_rounds;
     next.loop_rounds.push_back(pairs);
-    solve_p1(problem, seconds_left(), progress, cache, clock, next);
+    solve_p1(problem, limits_left(), progress, cache, clock, next);
+    nodes_used += next.matching.nodes;
     repeatable = repeatable && proven(next.matching);
     if (!next.matching.has_solution()) break;
     layout = std::move(next);
     laid_out = false;
   }
+  layout.p1_nodes = nodes_used;
   if (repeatable && layout.matching.status == matching::SolveStatus::optimal)
     cache.solved[key] = {layout.matching, layout.loop_rounds};
   if (!laid_out && lay_out_result) lay_out(charts, graph, cache, clock, layout);

@@ -9,10 +9,13 @@
 //     the chosen edges traced as arcs, the mesh refined along them, patches, the validity check,
 //     the angle RSD; while the check finds patches that are no disks, P1 again with the chosen
 //     pairs that close loops around a handle as conflicts (conflicts.h, loop_pairs()); all
-//     solves of P1 together within limits.max_solve_seconds.
+//     solves of P1 together within limits.max_solve_nodes branch-and-bound nodes (work: the
+//     same layout on every run) and the time guard limits.max_solve_seconds (a layout it stopped
+//     says so: matching.stopped_by).
 //
 // In:  the charts of M_f (charts.h), options. Out: plain values; the refined mesh carries the face
-//      attribute "patch". Throws LimitError (tracing steps or time), CancelledError.
+//      attribute "patch". Throws LimitError (tracing steps, crossings or the time guard),
+//      CancelledError.
 #pragma once
 
 #include <map>
@@ -36,7 +39,7 @@ struct LayoutOptions {
   double rho = 10;               // spiral test (6.7), (6.8)
   double length_factor = 3;      // L_max = length_factor * diameter / h, in parameter units
   int max_length_doublings = 3;  // Sec. 5.1: while G has no perfect matching
-  Limits limits;                 // max_trace_steps, max_trace_seconds, max_solve_seconds
+  Limits limits;                 // max_trace_*, max_solve_* (counts, and time guards)
 };
 
 struct StageSeconds {
@@ -51,6 +54,8 @@ struct LayoutGraph {
   std::size_t twin_edges = 0;    // removed as twins of kept edges (twin_edges.h)
   int length_doublings = 0;      // of L_max, until G had a perfect matching
   std::vector<std::uint32_t> unmatchable_ports;  // no matching of G covers them (empty: fine)
+  std::size_t trace_steps = 0;      // faces crossed by all separatrices (Limits::max_trace_steps)
+  std::size_t trace_crossings = 0;  // crossings they found (Limits::max_trace_crossings)
   std::vector<StageSeconds> seconds;
 };
 
@@ -71,6 +76,8 @@ struct QuadLayout {
   int reused_rounds = 0;
   // The rounds of P1 were run at this alpha before (ResolveCache::solved): none ran now.
   bool solved_before = false;
+  // Branch-and-bound nodes of the rounds that ran now (Limits::max_solve_nodes).
+  std::uint64_t p1_nodes = 0;
   std::vector<StageSeconds> seconds;
 };
 

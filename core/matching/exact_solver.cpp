@@ -27,14 +27,14 @@ constexpr std::uint64_t kNeighbourhoodNodes = 200;  // the searches of the roots
 // The optimistic cutoff of a root, above its LP bound by this fraction (solve_below_cutoff()).
 constexpr double kOptimisticGap = 2e-4;
 constexpr double kIntegral = 1e-6;  // an LP value this close to 0 or 1 is integral
-// One round of Gomory cuts at the root of a component this large (solve_component()).
+// One round of Gomory cuts at the root of a component this large (solve_component()), whatever
+// the time: the size decides, so that the result is the same on every run. (They were made only
+// when the time left was 8 times what the root LP took, so that the machine's load chose.) On
+// dragon at alpha 5 (62,967 edges) P1 is proven optimal with them, 15,011.31 after 148 nodes in
+// 47 s; without them it stopped at 60 s with 15,020.06 over 15,008.40 (4,400 nodes). Making them
+// takes up to 46 s there (alpha 0), which no limit stops.
 constexpr std::size_t kGomoryEdges = 10'000;
 constexpr int kGomoryCuts = 2'000;
-// The cuts are made only if the time left is this many times what the root LP took: making them
-// and solving again took 5.4 times as long on dragon at alpha 0 (46 s for GLPK to make them, which
-// no deadline stops, then 30 s, after 14 s), and a limit that stops the re-solve leaves no
-// incumbent.
-constexpr double kGomoryTimeFactor = 8.0;
 
 MatchingResult infeasible(std::vector<std::uint32_t> unmatchable = {}) {
   MatchingResult r;
@@ -96,6 +96,7 @@ std::vector<std::uint32_t> order_by_relaxation(const LpRelaxation& lp) {
   return order;
 }
 
+// A search stopped short stopped at its node limit, unless the time guard did (solve_exact()).
 MatchingResult from_search(const SearchResult& search, double proven_bound) {
   MatchingResult r;
   r.nodes = search.nodes;
@@ -113,15 +114,18 @@ MatchingResult from_search(const SearchResult& search, double proven_bound) {
     r.objective = search.best.objective;
     r.lower_bound = std::min(r.lower_bound, r.objective);
   } else {
-    r.status = SolveStatus::time_limit;
+    r.status = SolveStatus::node_limit;
     r.objective = kInfinity;
   }
+  r.stopped_by = StopReason::node_limit;
   return r;
 }
 
+// Only the time guard stops a solve before its search.
 MatchingResult stopped_at_root(double bound) {
   MatchingResult r;
   r.status = SolveStatus::time_limit;
+  r.stopped_by = StopReason::time_guard;
   r.objective = kInfinity;
   r.lower_bound = bound;
   return r;
@@ -263,14 +267,12 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
   const auto seconds_left = [&] {
     return std::chrono::duration<double>(deadline - Clock::now()).count();
   };
-  const Clock::time_point lp_start = Clock::now();
   const LpStatus status =
       lp.solve_with_cuts(root.exclusion, kInfinity, seconds_left(), kRootCutRounds);
   if (status == LpStatus::infeasible) return infeasible();
   if (status == LpStatus::time_limit) return stopped_at_root(cover_bound);
-  const double lp_seconds = std::chrono::duration<double>(Clock::now() - lp_start).count();
   if (mode.search_neighbourhood && problem.edges.size() >= kGomoryEdges &&
-      seconds_left() >= kGomoryTimeFactor * lp_seconds && lp.add_gomory_cuts(kGomoryCuts) > 0) {
+      lp.add_gomory_cuts(kGomoryCuts) > 0) {
     // Dragon at alpha 0 (62,967 edges): the root bound went from 7794.07 to 7798.96, and the
     // search proved the optimum, 7803.94, after 1,607 nodes (2,309 s on the 2-core machine);
     // without the cuts no run had closed the gap (the longest, 1,400 s: 7804.60 over 7802.14).
@@ -322,13 +324,20 @@ MatchingResult solve_component(ComponentStructure& part, const SolveMode& mode,
   return r;
 }
 
+bool stopped_without_solution(SolveStatus status) {
+  return status == SolveStatus::time_limit || status == SolveStatus::node_limit;
+}
+
 void add_component(const Component& component, const MatchingResult& part, MatchingResult& total) {
   for (std::uint32_t e : part.edges) total.edges.push_back(component.edge_of[e]);
   total.objective += part.objective;
   total.lower_bound += part.lower_bound;
   total.nodes += part.nodes;
+  total.stopped_by = std::max(total.stopped_by, part.stopped_by);
   if (part.status == SolveStatus::time_limit || total.status == SolveStatus::time_limit) {
     total.status = SolveStatus::time_limit;
+  } else if (stopped_without_solution(part.status) || stopped_without_solution(total.status)) {
+    total.status = SolveStatus::node_limit;
   } else if (part.status == SolveStatus::feasible) {
     total.status = SolveStatus::feasible;
   }
@@ -341,7 +350,10 @@ MatchingResult solve_all(const MatchingProblem& problem, std::vector<ComponentSt
   for (ComponentStructure& structure : parts) {
     const Component& component = structure.component;
     set_weights(structure.component, problem);
-    const MatchingResult part = solve_component(structure, mode, progress);
+    // The components share the node limit, in their order.
+    SolveMode part_mode = mode;
+    part_mode.limits.max_nodes -= std::min(total.nodes, mode.limits.max_nodes);
+    const MatchingResult part = solve_component(structure, part_mode, progress);
     if (part.status == SolveStatus::infeasible) {
       MatchingResult r = infeasible();
       for (std::uint32_t v : part.unmatchable_ports)
@@ -352,7 +364,7 @@ MatchingResult solve_all(const MatchingProblem& problem, std::vector<ComponentSt
     }
     add_component(component, part, total);
   }
-  if (total.status == SolveStatus::time_limit) {
+  if (stopped_without_solution(total.status)) {
     total.edges.clear();
     total.objective = kInfinity;
   }
@@ -454,16 +466,24 @@ std::vector<ComponentStructure>* ExactSolverCache::structure_for(const MatchingP
   return &with_extra_pairs_;
 }
 
-MatchingResult solve_exact(const MatchingProblem& problem, double time_limit,
+MatchingResult solve_exact(const MatchingProblem& problem, const SolveLimits& limits,
                            const Progress& progress, ExactSolverCache* cache) {
   const Clock::time_point start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
-                                    std::chrono::duration<double>(std::min(time_limit, 1e9)));
+                                    std::chrono::duration<double>(std::min(limits.seconds, 1e9)));
   std::vector<ComponentStructure>* cached =
       cache ? cache->structure_for(problem, deadline) : nullptr;
   std::vector<ComponentStructure> fresh;
   if (!cached) fresh = prepare(problem);
-  return solve_all(problem, cached ? *cached : fresh, start, SolveMode{{deadline}}, progress);
+  MatchingResult result = solve_all(problem, cached ? *cached : fresh, start,
+                                    SolveMode{{deadline, limits.nodes}}, progress);
+  // Any step may have been cut short once the guard passed (probing, a root LP, the Gomory
+  // cuts, a neighbourhood's search, the dive): the result is the machine's, and says so.
+  if (Clock::now() >= deadline) {
+    result.stopped_by = StopReason::time_guard;
+    if (result.status == SolveStatus::node_limit) result.status = SolveStatus::time_limit;
+  }
+  return result;
 }
 
 }  // namespace tessera::matching

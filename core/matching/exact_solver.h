@@ -1,4 +1,5 @@
-// The exact solver of P1 (thesis Ch. 5): proven optimal matchings, or a proven gap at the deadline.
+// The exact solver of P1 (thesis Ch. 5): proven optimal matchings, or a proven gap at the node
+// limit.
 //
 //  1. Independent components (components.h) are solved one by one.
 //  2. Feasibility: the blossom algorithm decides whether any matching covers every port; if not,
@@ -8,8 +9,7 @@
 //  4. Probing fixes edges that no feasible matching can hold, or that every one must (probing.h).
 //  5. The LP relaxation with clique rows and odd-set rows (lp_relaxation.h) gives the root bound
 //     and the clique multipliers that price conflicts for the Lagrangian repair (incumbent.h); on
-//     a component of 10,000 edges or more, one round of GLPK's Gomory cuts raises the bound, when
-//     the time left is 8 times what the LP took (else the search starts without them).
+//     a component of 10,000 edges or more, one round of GLPK's Gomory cuts raises the bound.
 //  6. The incumbent to start from: the better of a Lagrangian repair (incumbent.h) and the optimum
 //     of the smaller P1 left once the LP's edges at 1 are kept (RENS, exact_solver.cpp). Then the
 //     part of P1 that holds every matching no dearer than it, or than the LP bound plus 0.02 % if
@@ -20,8 +20,10 @@
 //     that went on to a search; without it the same trees, P1 summed 1,383 -> 1,104 ms (bunny 801
 //     -> 705, rocker-arm 350 -> 307).
 //  7. LP-based branch-and-bound with reduced-cost fixing closes the gap (branch_and_bound.h).
-// Deterministic: the same instance gives the same matching, whatever the machine, unless the time
-// limit stops it or leaves no time for the Gomory cuts.
+//  8. The components share the node limit (SolveLimits::nodes), in their order.
+// Deterministic: the same instance and node limit give the same matching, whatever the machine and
+// its load, unless the time guard (SolveLimits::seconds) passes during the solve: then stopped_by
+// is time_guard, whatever stopped (probing, a root LP, a search).
 //
 // Steps 1, 2, 4 and the clique cover of step 5 read no weight: an ExactSolverCache keeps them
 // between solves of one graph with its conflicts, so that a new alpha (SPEC "Data flow": only the
@@ -127,7 +129,7 @@ NeighbourhoodSearch solve_below_cutoff(const MatchingProblem& problem, const Adj
                                        const std::vector<Fixed>& fixed, const SearchLimits& limits);
 
 // `cache` may be null.
-MatchingResult solve_exact(const MatchingProblem& problem, double time_limit,
+MatchingResult solve_exact(const MatchingProblem& problem, const SolveLimits& limits,
                            const Progress& progress, ExactSolverCache* cache = nullptr);
 
 }  // namespace tessera::matching

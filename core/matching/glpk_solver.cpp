@@ -68,6 +68,8 @@ struct Search {
   const Progress* progress = nullptr;
   Clock::time_point start;
   double time_limit = 0.0;
+  std::uint64_t max_nodes = UINT64_MAX;
+  bool node_limit_hit = false;
   double last_report = -1.0;
   std::vector<double> incumbent;  // 1-based column values, empty when none
   bool incumbent_given = false;
@@ -90,6 +92,10 @@ void on_tree_event(glp_tree* tree, void* info) {
     int total = 0;
     glp_ios_tree_size(tree, nullptr, nullptr, &total);
     s.nodes = std::max<std::uint64_t>(s.nodes, static_cast<std::uint64_t>(total));
+    if (s.nodes >= s.max_nodes && !s.node_limit_hit) {
+      s.node_limit_hit = true;
+      glp_ios_terminate(tree);
+    }
     if (const int best = glp_ios_best_node(tree); best != 0)
       s.bound = glp_ios_node_bound(tree, best);
     if (glp_ios_reason(tree) == GLP_IHEUR && !s.incumbent_given && !s.incumbent.empty()) {
@@ -110,9 +116,10 @@ MatchingResult infeasible_result() {
   return r;
 }
 
-MatchingResult no_solution_result(double bound) {
+MatchingResult no_solution_result(double bound, StopReason reason) {
   MatchingResult r;
-  r.status = SolveStatus::time_limit;
+  r.status = reason == StopReason::node_limit ? SolveStatus::node_limit : SolveStatus::time_limit;
+  r.stopped_by = reason;
   r.objective = std::numeric_limits<double>::infinity();
   r.lower_bound = bound;
   return r;
@@ -146,11 +153,13 @@ bool solve_relaxation(glp_prob* lp, Search& s) {
 }  // namespace
 
 MatchingResult solve_with_glpk(const MatchingProblem& problem, const GlpkConfig& config,
-                               double time_limit, const Progress& progress) {
+                               const SolveLimits& limits, const Progress& progress) {
   Search s;
   s.progress = &progress;
   s.start = Clock::now();
-  s.time_limit = time_limit;
+  s.time_limit = limits.seconds;
+  s.max_nodes = limits.nodes;
+  const double time_limit = limits.seconds;
   if (!config.incumbent.empty()) {
     s.incumbent.assign(problem.edges.size() + 1, 0.0);
     for (std::uint32_t e : config.incumbent) s.incumbent[e + 1] = 1.0;
@@ -167,7 +176,7 @@ MatchingResult solve_with_glpk(const MatchingProblem& problem, const GlpkConfig&
   MatchingResult result;
   if (!solve_relaxation(lp.get(), s)) {
     const bool infeasible = glp_get_status(lp.get()) == GLP_NOFEAS;
-    result = infeasible ? infeasible_result() : no_solution_result(s.bound);
+    result = infeasible ? infeasible_result() : no_solution_result(s.bound, StopReason::time_guard);
   } else {
     glp_iocp parameters;
     glp_init_iocp(&parameters);
@@ -186,12 +195,16 @@ MatchingResult solve_with_glpk(const MatchingProblem& problem, const GlpkConfig&
     if (code != 0 && code != GLP_ETMLIM && code != GLP_ESTOP)
       throw Error("GLPK's branch-and-bound failed (code " + std::to_string(code) + ")");
     const int status = glp_mip_status(lp.get());
+    const StopReason stopped = code == GLP_ETMLIM ? StopReason::time_guard
+                               : s.node_limit_hit ? StopReason::node_limit
+                                                  : StopReason::none;
     if (status == GLP_NOFEAS) {
       result = infeasible_result();
     } else if (status == GLP_OPT || status == GLP_FEAS) {
       result = read_solution(problem, lp.get(), status == GLP_OPT && code == 0, s.bound);
+      result.stopped_by = stopped;
     } else {
-      result = no_solution_result(s.bound);
+      result = no_solution_result(s.bound, stopped);
     }
   }
   result.nodes = s.nodes;

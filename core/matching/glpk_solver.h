@@ -20,9 +20,10 @@ struct GlpkConfig {
   std::vector<std::uint32_t> incumbent;  // a feasible matching (edge indices), or empty
 };
 
-// Solves within time_limit seconds (wall clock). Progress::step("glpk", elapsed / limit) is called
+// Solves within limits.nodes nodes of GLPK's search tree (counted in its callback, which stops
+// it) and limits.seconds of wall clock (a guard). Progress::step("glpk", elapsed / guard) is called
 // a few times a second; a CancelledError it throws stops GLPK and is rethrown.
 MatchingResult solve_with_glpk(const MatchingProblem& problem, const GlpkConfig& config,
-                               double time_limit, const Progress& progress);
+                               const SolveLimits& limits, const Progress& progress);
 
 }  // namespace tessera::matching

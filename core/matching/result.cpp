@@ -16,6 +16,20 @@ const char* to_string(SolveStatus status) {
       return "infeasible";
     case SolveStatus::time_limit:
       return "time_limit";
+    case SolveStatus::node_limit:
+      return "node_limit";
+  }
+  return "unknown";
+}
+
+const char* to_string(StopReason reason) {
+  switch (reason) {
+    case StopReason::none:
+      return "none";
+    case StopReason::node_limit:
+      return "node_limit";
+    case StopReason::time_guard:
+      return "time_guard";
   }
   return "unknown";
 }

@@ -23,6 +23,9 @@ nlohmann::ordered_json result_json(const MatchingProblem& problem, SolverKind so
   out["gap"] = finite_or_null(result.gap());
   out["seconds"] = result.seconds;
   out["nodes"] = result.nodes;
+  out["stopped_by"] = result.stopped_by == StopReason::none
+                          ? nlohmann::ordered_json(nullptr)
+                          : nlohmann::ordered_json(to_string(result.stopped_by));
   out["edges"] = result.edges;
   out["unmatchable_ports"] = result.unmatchable_ports;
   const auto virtual_ports = static_cast<std::size_t>(std::count_if(

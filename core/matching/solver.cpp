@@ -16,7 +16,7 @@ constexpr int kRepairRounds = 6;
 
 // The tuned GLPK configuration: clique rows, cuts, and the Lagrangian repair's matching (priced by
 // the plain weights) as the first incumbent.
-MatchingResult solve_glpk_tuned(const MatchingProblem& problem, double time_limit,
+MatchingResult solve_glpk_tuned(const MatchingProblem& problem, const SolveLimits& limits,
                                 const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   GlpkConfig config;
@@ -31,7 +31,8 @@ MatchingResult solve_glpk_tuned(const MatchingProblem& problem, double time_limi
   if (incumbent.found) config.incumbent = incumbent.edges;
   const double spent =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  MatchingResult result = solve_with_glpk(problem, config, time_limit - spent, progress);
+  MatchingResult result =
+      solve_with_glpk(problem, config, {limits.seconds - spent, limits.nodes}, progress);
   result.seconds += spent;
   return result;
 }
@@ -65,18 +66,19 @@ const char* to_string(SolverKind kind) {
   return "unknown";
 }
 
-MatchingResult solve_matching(const MatchingProblem& problem, SolverKind kind, double time_limit,
-                              const Progress& progress, ExactSolverCache* cache) {
+MatchingResult solve_matching(const MatchingProblem& problem, SolverKind kind,
+                              const SolveLimits& limits, const Progress& progress,
+                              ExactSolverCache* cache) {
   MatchingResult result;
   switch (kind) {
     case SolverKind::exact:
-      result = solve_exact(problem, time_limit, progress, cache);
+      result = solve_exact(problem, limits, progress, cache);
       break;
     case SolverKind::glpk:
-      result = solve_with_glpk(problem, GlpkConfig{}, time_limit, progress);
+      result = solve_with_glpk(problem, GlpkConfig{}, limits, progress);
       break;
     case SolverKind::glpk_tuned:
-      result = solve_glpk_tuned(problem, time_limit, progress);
+      result = solve_glpk_tuned(problem, limits, progress);
       break;
   }
   verify(problem, result, kind);
