@@ -178,7 +178,9 @@ constexpr const char* kMapHelp =
     "quarter tube. Checks on the mesh: V, E, F found, every face a disk, the quarter tubes cover\n"
     "the source's flags once, closed, oriented, genus, self-intersections.\n"
     "  --on T           the target (default: every target of the map's genus, the best ranked:\n"
-    "                   no hosohedron, reflections before rotations, least distorted)\n"
+    "                   no hosohedron, reflections before rotations, least distorted). The\n"
+    "                   pairings are drawn in that order, surfaces free of self-intersections\n"
+    "                   first, until one passes the checks\n"
     "  -o FILE          .glb (faces coloured, per-face _FACE and _TILE, edges as lines, the\n"
     "                   pairing in extras), .ply (integer face properties 'face', 'tile'), .obj\n"
     "  --json           print {source, target, genus, V, E, F, faces_are_disks, covers_once,\n"
@@ -188,7 +190,7 @@ constexpr const char* kMapHelp =
     "  --max-steps N    work limit of the pairing search per target, triangles walked\n"
     "                   (default 2000000)\n"
     "  --radius R       rotation pairings: corners within this hyperbolic distance of P1\n"
-    "                   (default 4.5)\n"
+    "                   (default: 1.5 past the map's vertex-to-face-centre distance, in [4.5, 8])\n"
     "  --no-self-intersections   skip the self-intersection count\n"
     "  --max-cosets N, --max-seconds S, --max-file-bytes N   as for 'tessera regmap info'\n";
 
@@ -196,16 +198,19 @@ constexpr const char* kRealizeHelp =
     "usage: tessera regmap realize [--genus G | --genus G..H] [-o realizations.json] [--json]\n"
     "\n"
     "The automatic realization (thesis Sec. 9.6): every catalog map of the genus range and its\n"
-    "dual is paired with every target of its genus (see 'tessera regmap map --help'); the best\n"
-    "ranked target is kept with its pairing, the others that work are listed. A target whose\n"
-    "regular surface crosses itself gives way to the next that does not (each chosen surface is\n"
-    "built and searched for crossings once). Prints the counts; -o writes the manifest\n"
+    "dual is paired with every target of its genus (see 'tessera regmap map --help'). The\n"
+    "pairings are drawn in ranked order, those on surfaces free of self-intersections first,\n"
+    "until one draws the map right (V, E, F found, faces disks, flags covered once, closed,\n"
+    "oriented, of its genus); that one is kept, the other targets found are listed, and a map\n"
+    "none of whose pairings draws right is unrealized (each surface is built once). Prints the\n"
+    "counts; -o writes the manifest\n"
     "{version, counts, maps: [{source, genus, p, q, order, V, E, F, target, target_kind, score,\n"
     "others, surface: {base, self_intersections}, pairing}], unrealized: [{source, genus, p, q,\n"
     "order, V, E, F}]} that the page reads instead of searching, and the gallery its cards from.\n"
     "  --genus G..H    the genus range (default 2..101)\n"
     "  --max-steps N   work limit of each pairing search (default 2000000)\n"
-    "  --radius R      rotation pairings: corners within this hyperbolic distance (default 4.5)\n"
+    "  --radius R      rotation pairings: corners within this hyperbolic distance (default: as\n"
+    "                  for 'tessera regmap map')\n"
     "  --json          print the counts as JSON\n";
 
 bool wants_help(const Args& args) {
@@ -481,10 +486,14 @@ int surface(const Args& args) {
 
 // The best realization on the named target, or on every target of the genus; InputError naming
 // the targets tried otherwise.
-regmap::Realization pick_target(const regmap::FiniteGroup& source,
-                                const regmap::ElementWords& words, int genus, const std::string& on,
-                                const regmap::PairingLimits& pairing_limits, const Limits& limits,
-                                const std::string& name) {
+// M drawn on the best target that draws it right (--on names the one to try).
+regmap::DrawnMap draw_on_best_target(const regmap::FiniteGroup& source,
+                                     const regmap::ElementWords& words,
+                                     const regmap::MapFigures& figures, const std::string& on,
+                                     const regmap::PairingLimits& pairing_limits,
+                                     const regmap::MappedMapOptions& options, const Limits& limits,
+                                     const std::string& name) {
+  const int genus = figures.genus;
   const regmap::Catalog catalog = regmap::read_catalog(catalog_path());
   std::vector<regmap::TargetMap> targets;
   if (!on.empty()) {
@@ -498,11 +507,18 @@ regmap::Realization pick_target(const regmap::FiniteGroup& source,
     targets = regmap::all_targets(catalog, genus);
   }
   regmap::TargetGroups groups(limits);
-  const regmap::RealizationSearch search =
+  regmap::TargetSurfaces surfaces(limits);
+  regmap::RealizationSearch search =
       regmap::find_realizations(source, words, genus, targets, pairing_limits, groups);
-  if (!search.found.empty()) return search.found.front();
+  std::optional<regmap::DrawnMap> drawn = regmap::draw_first_right(
+      search, source, words, figures, options, surfaces, groups, stderr_progress());
+  if (drawn) return std::move(*drawn);
   std::string tried;
   for (const std::string& t : search.tried) tried += (tried.empty() ? "" : ", ") + t;
+  if (search.drawn_wrong > 0)
+    throw InputError(name + ": none of the " + std::to_string(search.drawn_wrong) +
+                     " pairings found with " + tried +
+                     " draws it right (they do not glue into its faces)");
   throw InputError(
       name + " has no pairing, by reflections or by rotations, with " +
       (tried.empty() ? std::string("any target (none of genus ") + std::to_string(genus) + ")"
@@ -510,8 +526,10 @@ regmap::Realization pick_target(const regmap::FiniteGroup& source,
       (search.stopped ? " (the search stopped at --max-steps on some; raise it)" : ""));
 }
 
-double radius_from(const ParsedArgs& parsed, double fallback) {
-  const double r = parsed.number("--radius", fallback);
+// --radius, or 0 (automatic) when not given.
+double radius_from(const ParsedArgs& parsed) {
+  if (!parsed.has("--radius")) return 0.0;
+  const double r = parsed.number("--radius", 0.0);
   if (!(r > 0.5 && r <= 8.0)) throw UsageError("--radius expects a distance in (0.5, 8]");
   return r;
 }
@@ -537,7 +555,7 @@ int map_on_target(const Args& args) {
   const PrintOptions print = print_options(parsed, output);
   regmap::PairingLimits pairing_limits;
   pairing_limits.max_steps = parsed.count("--max-steps", pairing_limits.max_steps);
-  pairing_limits.radius = radius_from(parsed, pairing_limits.radius);
+  pairing_limits.radius = radius_from(parsed);
   regmap::MappedMapOptions options;
   options.subdivisions = static_cast<int>(parsed.count("--subdivisions", 0));
   if (options.subdivisions > 64) throw UsageError("--subdivisions expects 1..64");
@@ -551,10 +569,10 @@ int map_on_target(const Args& args) {
   if (!figures.orientable)
     throw InputError(presentation.name + " is not orientable: it has no regular surface to lie on");
   const regmap::ElementWords words(group);
-  const regmap::Realization chosen = pick_target(group, words, figures.genus, parsed.value("--on"),
-                                                 pairing_limits, limits, presentation.name);
   const regmap::DrawnMap map =
-      regmap::draw_realization(group, words, chosen, options, limits, stderr_progress());
+      draw_on_best_target(group, words, figures, parsed.value("--on"), pairing_limits, options,
+                          limits, presentation.name);
+  const regmap::Realization& chosen = map.realization;
   const double seconds = seconds_since(start);
   const regmap::MappedMapStats& s = map.drawn.stats;
   Json out = regmap::drawn_map_json(presentation.name, figures, map, seconds);
@@ -620,7 +638,7 @@ int realize(const Args& args) {
   const Limits limits = limits_from(parsed);
   regmap::PairingLimits pairing_limits;
   pairing_limits.max_steps = parsed.count("--max-steps", pairing_limits.max_steps);
-  pairing_limits.radius = radius_from(parsed, pairing_limits.radius);
+  pairing_limits.radius = radius_from(parsed);
   const std::string output = parsed.value("-o");
   const auto start = std::chrono::steady_clock::now();
   const regmap::Catalog catalog = regmap::read_catalog(catalog_path());
@@ -628,7 +646,10 @@ int realize(const Args& args) {
   regmap::TargetGroups groups(limits);
   regmap::TargetSurfaces surfaces(limits);
   Json maps = Json::array(), unrealized = Json::array();
-  std::size_t sources = 0, non_hosohedral = 0, crossing_free = 0, by_reflections = 0, errors = 0;
+  std::size_t sources = 0, non_hosohedral = 0, crossing_free = 0, by_reflections = 0, errors = 0,
+              drawn_wrong = 0;
+  regmap::MappedMapOptions drawing;
+  drawing.find_self_intersections = false;  // the surface's count (TargetSurfaces)
   int highest = 0;
   std::set<std::string> seen;
   for (const regmap::CatalogEntry& row : catalog) {
@@ -642,16 +663,21 @@ int realize(const Args& args) {
         const regmap::ElementWords words(group);
         regmap::RealizationSearch search =
             regmap::find_realizations(group, words, entry.genus, targets, pairing_limits, groups);
-        if (search.found.empty()) {
+        const bool drawn =
+            regmap::draw_first_right(search, group, words, regmap::map_figures(group), drawing,
+                                     surfaces, groups)
+                .has_value();
+        drawn_wrong += search.drawn_wrong;
+        if (!drawn) {
           unrealized.push_back(map_figures(entry));
           continue;
         }
-        regmap::prefer_crossing_free(search, surfaces, groups);
         const regmap::Realization& best = search.found.front();
-        const regmap::TargetSurface& surface = surfaces.surface(best.target, groups);
+        const regmap::SurfaceStats& surface = surfaces.surface(best.target, groups).stats;
         Json others = Json::array();
-        for (std::size_t k = 1; k < search.found.size(); ++k)
-          others.push_back(search.found[k].target.name);
+        std::set<std::string> listed = {best.target.name};
+        for (const regmap::Realization& r : search.found)
+          if (listed.insert(r.target.name).second) others.push_back(r.target.name);
         Json realized = map_figures(entry);
         realized.update(
             Json{{"target", best.target.name},
@@ -685,6 +711,7 @@ int realize(const Args& args) {
                        {"by_reflections", by_reflections},
                        {"by_rotations", maps.size() - by_reflections},
                        {"errors", errors},
+                       {"pairings_drawn_wrong", drawn_wrong},
                        {"highest_genus", highest},
                        {"seconds", seconds}};
   if (!output.empty()) {

@@ -123,6 +123,8 @@ TEST(RegmapRealizeCli, CountsAndManifestOfGenusThree) {
   EXPECT_GT(counts["maps"].get<int>(), 10);
   EXPECT_GE(counts["realized"].get<int>(), 5);
   EXPECT_EQ(counts["highest_genus"], 3);
+  // Each map's pairings are drawn until one is right: those that were not are counted.
+  EXPECT_TRUE(counts["pairings_drawn_wrong"].is_number_unsigned());
   std::ifstream in(manifest_path);
   const auto manifest = nlohmann::json::parse(in);
   EXPECT_EQ(manifest["maps"].size(), counts["realized"].get<std::size_t>());

@@ -16,9 +16,11 @@
 
 #include <Eigen/Geometry>
 
+#include "base/disjoint_sets.h"
 #include "base/error.h"
 #include "mesh/mesh.h"
 #include "regmap/catalog.h"
+#include "regmap/mapped_export.h"
 #include "regmap/mapped_map.h"
 #include "regmap/pairing.h"
 #include "regmap/realization.h"
@@ -222,29 +224,21 @@ void expect_drawn(const std::string& source, const std::string& target) {
   // label stands for whole faces.
   const Pairing& pairing = d.search.pairings[0];
   const Orbits faces = face_orbits(d.source);
-  std::vector<Index> parent(faces.count);
-  std::iota(parent.begin(), parent.end(), Index{0});
-  const auto root = [&](Index v) {
-    while (parent[v] != v) v = parent[v];
-    return v;
-  };
+  DisjointSets orbits(faces.count);
   for (Element g = 0; g < static_cast<Element>(d.source.order()); ++g)
-    for (Element k : {pairing.x, pairing.y}) {
-      const Index a = root(static_cast<Index>(faces.label[static_cast<std::size_t>(g)]));
-      const Index b =
-          root(static_cast<Index>(faces.label[static_cast<std::size_t>(words.multiply(k, g))]));
-      parent[std::max(a, b)] = std::min(a, b);
-    }
-  std::set<Index> roots;
-  for (Index f = 0; f < faces.count; ++f) roots.insert(root(f));
+    for (Element k : {pairing.x, pairing.y})
+      orbits.join(faces.label[static_cast<std::size_t>(g)],
+                  faces.label[static_cast<std::size_t>(words.multiply(k, g))]);
+  const auto root = [&](std::int32_t f) { return orbits.find(static_cast<std::size_t>(f)); };
+  std::set<std::size_t> roots;
+  for (std::size_t f = 0; f < faces.count; ++f) roots.insert(orbits.find(f));
   EXPECT_EQ(s.face_orbits, roots.size());
   const auto& face = m.mesh.face_attributes.at(kFaceAttribute);
   const auto& orbit = m.mesh.face_attributes.at(kOrbitAttribute);
   std::map<std::int32_t, std::int32_t> orbit_of_face;
   for (std::size_t t = 0; t < face.size(); ++t) {
     EXPECT_EQ(orbit_of_face.emplace(face[t], orbit[t]).first->second, orbit[t]);
-    EXPECT_EQ(root(static_cast<Index>(face[t])) == root(static_cast<Index>(face[0])),
-              orbit[t] == orbit[0]);
+    EXPECT_EQ(root(face[t]) == root(face[0]), orbit[t] == orbit[0]);
   }
   // The drawing subdivides the surface's triangles: the same area, and crossings only where the
   // surface has them.
@@ -300,6 +294,40 @@ TEST(RegmapRealization, PairingJsonRoundTripsAndIsValidated) {
   nlohmann::json missing = json;
   missing.erase("target");
   EXPECT_THROW(pairing_from_json(missing, d.source.order()), InputError);
+}
+
+// The realizations are drawn in ranked order until one is right: a first pairing spoiled here (its
+// y replaced by x, so that the quarter tubes' sides no longer match) is dropped and counted, and
+// the next one is drawn and moved to the front.
+TEST(RegmapRealization, DrawsTheFirstPairingThatDrawsRight) {
+  const FiniteGroup source =
+      enumerate_group(presentation_of(find_map(catalog(), "R3.1")), Limits());
+  const ElementWords words(source);
+  const MapFigures figures = map_figures(source);
+  TargetGroups groups{Limits()};
+  TargetSurfaces surfaces{Limits()};
+  RealizationSearch search =
+      find_realizations(source, words, 3, all_targets(catalog(), 3), PairingLimits(), groups);
+  ASSERT_GE(search.found.size(), 2u);
+  const Realization second = search.found[1];
+  search.found[0].pairing.y = search.found[0].pairing.x;
+  MappedMapOptions options;
+  options.find_self_intersections = false;
+  const std::optional<DrawnMap> drawn =
+      draw_first_right(search, source, words, figures, options, surfaces, groups);
+  ASSERT_TRUE(drawn.has_value());
+  EXPECT_EQ(search.drawn_wrong, 1u);
+  EXPECT_EQ(drawn->realization.target.name, second.target.name);
+  EXPECT_EQ(drawn->realization.pairing.y, second.pairing.y);
+  EXPECT_TRUE(drawn_right(drawn->drawn.stats, figures));
+  EXPECT_EQ(search.found.front().pairing.y, second.pairing.y);
+
+  // When none draws right, nothing is drawn and none is left.
+  for (Realization& r : search.found) r.pairing.y = r.pairing.x;
+  const std::size_t left = search.found.size();
+  EXPECT_FALSE(draw_first_right(search, source, words, figures, options, surfaces, groups));
+  EXPECT_TRUE(search.found.empty());
+  EXPECT_EQ(search.drawn_wrong, 1u + left);
 }
 
 // A pairing found for one target does not glue on another target's surface of another size.

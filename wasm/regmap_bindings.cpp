@@ -4,6 +4,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -187,11 +188,12 @@ std::string string_option(const val& options, const char* key) {
   return v.as<std::string>();
 }
 
-// The realization to draw: the manifest's pairing when the worker hands one in (options.pairing,
-// its JSON text; it is checked like any file), else the best of a search over options.on or
-// every target of the map's genus. `others`: the other targets found to work.
-regmap::Realization choose_realization(const Enumerated& e, const regmap::ElementWords& words,
-                                       const val& options, std::vector<std::string>& others) {
+// M drawn through the manifest's pairing when the worker hands one in (options.pairing, its JSON
+// text; it is checked like any file), else on the best target that draws it right, of a search
+// over options.on or every target of the map's genus. `others`: the other targets found to work.
+regmap::DrawnMap draw_chosen(const Enumerated& e, const regmap::ElementWords& words,
+                             const val& options, const regmap::MappedMapOptions& drawing,
+                             const Progress& progress, std::vector<std::string>& others) {
   const std::string pairing = string_option(options, "pairing");
   const std::string on = string_option(options, "on");
   if (!pairing.empty()) {
@@ -202,7 +204,7 @@ regmap::Realization choose_realization(const Enumerated& e, const regmap::Elemen
     r.target = regmap::find_target(*catalog(), r.pairing.target);
     if (r.target.surface_genus() != e.figures.genus)
       throw InputError("the realization's target " + r.target.name + " has another genus");
-    return r;
+    return regmap::draw_realization(e.group, words, r, drawing, page_limits(), progress);
   }
   std::vector<regmap::TargetMap> targets;
   if (!on.empty())
@@ -210,19 +212,26 @@ regmap::Realization choose_realization(const Enumerated& e, const regmap::Elemen
   else
     targets = regmap::all_targets(*catalog(), e.figures.genus);
   regmap::TargetGroups groups(page_limits());
-  const regmap::RealizationSearch search =
+  regmap::TargetSurfaces surfaces(page_limits());
+  regmap::RealizationSearch search =
       regmap::find_realizations(e.group, words, e.figures.genus, targets, {}, groups);
-  if (search.found.empty()) {
+  std::optional<regmap::DrawnMap> drawn = regmap::draw_first_right(
+      search, e.group, words, e.figures, drawing, surfaces, groups, progress);
+  if (!drawn) {
     std::string tried;
     for (const std::string& t : search.tried) tried += (tried.empty() ? "" : ", ") + t;
     throw InputError(
-        e.presentation.name + " has no pairing with " +
+        e.presentation.name +
+        (search.drawn_wrong > 0 ? ": none of the pairings found with " : " has no pairing with ") +
         (tried.empty() ? "any target of genus " + std::to_string(e.figures.genus) : tried) +
+        (search.drawn_wrong > 0 ? " draws it right" : "") +
         ": it cannot be drawn on a surface of its genus here");
   }
-  for (std::size_t k = 1; k < search.found.size(); ++k)
-    others.push_back(search.found[k].target.name);
-  return search.found.front();
+  for (const regmap::Realization& r : search.found)
+    if (r.target.name != drawn->realization.target.name &&
+        std::find(others.begin(), others.end(), r.target.name) == others.end())
+      others.push_back(r.target.name);
+  return std::move(*drawn);
 }
 
 // { info, drawn: drawn_map_json, others: [target names], positions, triangles, triangleFace,
@@ -237,11 +246,10 @@ val map_drawn(const std::string& spec, const val& options, const val& on_progres
     last_drawn().reset();
     const regmap::ElementWords words(e.group);
     std::vector<std::string> others;
-    const regmap::Realization realization = choose_realization(e, words, options, others);
     regmap::MappedMapOptions drawing;
     drawing.find_self_intersections = false;
-    regmap::DrawnMap map = regmap::draw_realization(e.group, words, realization, drawing,
-                                                    page_limits(), js_progress(on_progress));
+    regmap::DrawnMap map =
+        draw_chosen(e, words, options, drawing, js_progress(on_progress), others);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::ordered_json figures =

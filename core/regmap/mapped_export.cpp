@@ -1,5 +1,8 @@
 #include "regmap/mapped_export.h"
 
+#include <algorithm>
+
+#include "base/error.h"
 #include "regmap/surface_export.h"
 
 namespace tessera::regmap {
@@ -14,6 +17,40 @@ DrawnMap draw_realization(const FiniteGroup& source, const ElementWords& words,
   DrawnMap out{realization, build_regular_surface(target, target_group, {}, limits, progress), {}};
   out.drawn = map_onto_surface(source, words, realization.pairing, out.surface, options, progress);
   return out;
+}
+
+std::optional<DrawnMap> draw_first_right(RealizationSearch& search, const FiniteGroup& source,
+                                         const ElementWords& words, const MapFigures& figures,
+                                         const MappedMapOptions& options, TargetSurfaces& surfaces,
+                                         TargetGroups& groups, const Progress& progress) {
+  auto& found = search.found;
+  for (const bool crossing_free : {true, false}) {
+    for (std::size_t k = 0; k < found.size();) {
+      const RegularSurface& surface = surfaces.surface(found[k].target, groups);
+      if ((surface.stats.self_intersections == 0) != crossing_free) {
+        ++k;
+        continue;
+      }
+      try {
+        MappedMap drawn =
+            map_onto_surface(source, words, found[k].pairing, surface, options, progress);
+        if (drawn_right(drawn.stats, figures)) {
+          std::rotate(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(k),
+                      found.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+          return DrawnMap{found.front(), surface, std::move(drawn)};
+        }
+      } catch (const CancelledError&) {
+        throw;
+      } catch (const LimitError&) {
+        throw;
+      } catch (const Error&) {
+        // the pairing does not glue on the surface's quarter tubes: the next one
+      }
+      found.erase(found.begin() + static_cast<std::ptrdiff_t>(k));
+      ++search.drawn_wrong;
+    }
+  }
+  return std::nullopt;
 }
 
 nlohmann::ordered_json drawn_map_json(const std::string& source_name, const MapFigures& figures,

@@ -2,6 +2,7 @@
 // (and JSON, and GLB scene) that `tessera regmap map` and the page's worker share.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -26,6 +27,16 @@ struct DrawnMap {
 DrawnMap draw_realization(const FiniteGroup& source, const ElementWords& words,
                           const Realization& realization, const MappedMapOptions& options,
                           const Limits& limits, const Progress& progress = Progress());
+
+// Draws the realizations of `search`, those on surfaces free of self-intersections first and each
+// kind in ranked order, until one draws M right (drawn_right), and moves it to the front; those
+// drawn before it wrong (or that did not glue) are removed and counted in search.drawn_wrong.
+// Nothing when none draws right (`found` then holds none that was drawn wrong).
+std::optional<DrawnMap> draw_first_right(RealizationSearch& search, const FiniteGroup& source,
+                                         const ElementWords& words, const MapFigures& figures,
+                                         const MappedMapOptions& options, TargetSurfaces& surfaces,
+                                         TargetGroups& groups,
+                                         const Progress& progress = Progress());
 
 // source, target, target_kind, genus, V, E, F (found), expected {V, E, F}, face_orbits (of M's
 // faces under the surface's rotations), faces_are_disks,

@@ -601,13 +601,20 @@ class OverlaySimplifier {
                                      index[static_cast<std::size_t>(tri[2])]});
       out.shape.triangle_flag.push_back(shape_.triangle_flag[t]);
     }
+    // A vertex on a side or on M's edge that the simplification took out leaves the drawing
+    // nothing to glue or draw there: refused (a pairing whose quadrilateral the template cannot
+    // follow), never indexed.
+    auto kept = [&](std::int32_t v) {
+      const std::int32_t k = index[static_cast<std::size_t>(v)];
+      if (k < 0) throw Error("the quarter tube's template lost a vertex on its sides or edges");
+      return k;
+    };
     for (std::size_t v = 0; v < nv; ++v)
       for (std::int32_t w : along_map_edge_[v])
         if (static_cast<std::size_t>(w) > v)
-          out.shape.map_edges.push_back({index[v], index[static_cast<std::size_t>(w)]});
+          out.shape.map_edges.push_back({kept(static_cast<std::int32_t>(v)), kept(w)});
     for (std::size_t i = 0; i < 4; ++i)
-      for (const auto& [p, v] : shape_.side[i])
-        out.shape.side[i].push_back({p, index[static_cast<std::size_t>(v)]});
+      for (const auto& [p, v] : shape_.side[i]) out.shape.side[i].push_back({p, kept(v)});
     out.shape.pieces = shape_.pieces;
     o_ = std::move(out);
   }
@@ -940,6 +947,11 @@ void check_closed_and_oriented(const Mesh& mesh, MappedMapStats& stats) {
 }
 
 }  // namespace
+
+bool drawn_right(const MappedMapStats& s, const MapFigures& figures) {
+  return s.vertices == figures.vertices && s.edges == figures.edges && s.faces == figures.faces &&
+         s.faces_are_disks && s.covers_once && s.closed && s.oriented && s.genus == figures.genus;
+}
 
 MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
                            const Pairing& pairing, const RegularSurface& surface,

@@ -71,6 +71,10 @@ struct MappedMap {
   MappedMapStats stats;
 };
 
+// Whether the drawing is M as its group says: V, E, F found, faces open disks, every flag covered
+// once, the surface closed, oriented and of M's genus.
+bool drawn_right(const MappedMapStats& stats, const MapFigures& figures);
+
 // Throws Error when the pairing does not glue on the surface's quarter tubes (the pairing and
 // the surface do not belong together).
 MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,

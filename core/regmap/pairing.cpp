@@ -375,8 +375,10 @@ PairingSearch find_pairings(const FiniteGroup& source, const ElementWords& words
   PairingLimits rest = limits;
   rest.max_steps = limits.max_steps > result.steps ? limits.max_steps - result.steps : 0;
   PairingSearch rotations = find_rotation_pairings(source, words, target, target_group, rest);
+  const std::size_t reflections = result.pairings.size();
   for (Pairing& p : rotations.pairings) {
-    const bool known = std::any_of(result.pairings.begin(), result.pairings.end(),
+    const auto by_reflections = result.pairings.begin() + static_cast<std::ptrdiff_t>(reflections);
+    const bool known = std::any_of(result.pairings.begin(), by_reflections,
                                    [&](const Pairing& r) { return r.x == p.x && r.y == p.y; });
     if (!known) result.pairings.push_back(std::move(p));
   }

@@ -67,11 +67,13 @@ struct Pairing {
 
 struct PairingLimits {
   std::size_t max_steps = 2'000'000;  // triangles visited, over all candidates
-  double radius = 4.5;                // rotation pairings: P2, P3 within this distance of P1
+  // Rotation pairings: P2, P3 within this distance of P1; 0 picks it from M's type
+  // (rotation_pairing.cpp).
+  double radius = 0.0;
 };
 
 struct PairingSearch {
-  std::vector<Pairing> pairings;  // distinct (x, y): reflections first, least distorted first
+  std::vector<Pairing> pairings;  // reflections first, least distorted first
   std::size_t candidates = 0;     // quadrilaterals that closed geometrically
   std::size_t steps = 0;          // triangles the walks visited
   bool stopped = false;           // the walks hit limits.max_steps

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "base/error.h"
-#include "regmap/regular_surface.h"
 
 namespace tessera::regmap {
 
@@ -22,27 +21,14 @@ const FiniteGroup& TargetGroups::group(const TargetMap& target) {
   return found->second;
 }
 
-const TargetSurface& TargetSurfaces::surface(const TargetMap& target, TargetGroups& groups) {
+const RegularSurface& TargetSurfaces::surface(const TargetMap& target, TargetGroups& groups) {
   auto found = surfaces_.find(target.name);
-  if (found == surfaces_.end()) {
-    const RegularSurface built =
-        build_regular_surface(target.presentation, groups.group(target), {}, limits_);
-    found =
-        surfaces_
-            .emplace(target.name, TargetSurface{built.stats.base, built.stats.self_intersections})
-            .first;
-  }
+  if (found == surfaces_.end())
+    found = surfaces_
+                .emplace(target.name, build_regular_surface(target.presentation,
+                                                            groups.group(target), {}, limits_))
+                .first;
   return found->second;
-}
-
-void prefer_crossing_free(RealizationSearch& search, TargetSurfaces& surfaces,
-                          TargetGroups& groups) {
-  auto& found = search.found;
-  for (auto r = found.begin(); r != found.end(); ++r) {
-    if (surfaces.surface(r->target, groups).self_intersections > 0) continue;
-    std::rotate(found.begin(), r, r + 1);
-    return;
-  }
 }
 
 RealizationSearch find_realizations(const FiniteGroup& source, const ElementWords& words, int genus,
@@ -55,9 +41,8 @@ RealizationSearch find_realizations(const FiniteGroup& source, const ElementWord
     const PairingSearch search =
         find_pairings(source, words, t.presentation, groups.group(t), pairing_limits);
     result.stopped = result.stopped || search.stopped;
-    if (search.pairings.empty()) continue;
-    const Pairing& best = search.pairings.front();
-    result.found.push_back({t, best, realization_score(t, best)});
+    for (std::size_t k = 0; k < std::min(search.pairings.size(), kPairingsPerTarget); ++k)
+      result.found.push_back({t, search.pairings[k], realization_score(t, search.pairings[k])});
   }
   std::stable_sort(result.found.begin(), result.found.end(),
                    [](const Realization& a, const Realization& b) { return a.score < b.score; });

@@ -2,8 +2,9 @@
 // the map's genus is tried and the pairings ranked. A hosohedral surface (two junctions) shows
 // least of the map, so it comes last; then pairings by reflections (the drawing keeps T's
 // mirrors) before rotation pairings, each by its quadrilateral's distortion; then more junctions.
-// A surface that crosses itself is passed over for the next one that does not
-// (prefer_crossing_free), which costs building the surfaces and so is the batch's choice.
+// The ranked pairings are then drawn until one is right (draw_first_right, mapped_export.h): a
+// pairing can pass every test of the search and still not glue, and a surface that crosses itself
+// is passed over for the next one that does not.
 #pragma once
 
 #include <map>
@@ -16,6 +17,7 @@
 #include "regmap/element_words.h"
 #include "regmap/finite_group.h"
 #include "regmap/pairing.h"
+#include "regmap/regular_surface.h"
 #include "regmap/target_maps.h"
 
 namespace tessera::regmap {
@@ -30,7 +32,11 @@ struct RealizationSearch {
   std::vector<Realization> found;  // best first
   std::vector<std::string> tried;  // every target searched, in order
   bool stopped = false;            // some search hit its work limit
+  std::size_t drawn_wrong = 0;     // pairings that draw_first_right dropped
 };
+
+// Pairings kept per target: the search's next ones when the best does not draw.
+inline constexpr std::size_t kPairingsPerTarget = 8;
 
 double realization_score(const TargetMap& target, const Pairing& pairing);
 
@@ -45,34 +51,23 @@ class TargetGroups {
   std::map<std::string, FiniteGroup> groups_;
 };
 
-// What a target's regular surface is, as built for drawing (with the search for crossings): its
-// base ("relaxation", "spine" or a symmetric base's name) and its self-intersecting triangle pairs,
-// which a drawing on it has too (the drawing subdivides the surface).
-struct TargetSurface {
-  std::string base;
-  std::size_t self_intersections = 0;
-};
-
-// Targets' surfaces, built once each.
+// Targets' regular surfaces, built once each as for drawing (searched for crossings: their
+// stats.self_intersections, which a drawing on them has too, since it subdivides the surface).
 class TargetSurfaces {
  public:
   explicit TargetSurfaces(const Limits& limits) : limits_(limits) {}
-  const TargetSurface& surface(const TargetMap& target, TargetGroups& groups);
+  const RegularSurface& surface(const TargetMap& target, TargetGroups& groups);
 
  private:
   Limits limits_;
-  std::map<std::string, TargetSurface> surfaces_;
+  std::map<std::string, RegularSurface> surfaces_;
 };
 
-// Searches `targets` (those of other genus are skipped) for pairings with M.
+// Searches `targets` (those of other genus are skipped) for pairings with M: each target's
+// kPairingsPerTarget best, all ranked together.
 RealizationSearch find_realizations(const FiniteGroup& source, const ElementWords& words, int genus,
                                     const std::vector<TargetMap>& targets,
                                     const PairingLimits& pairing_limits, TargetGroups& groups);
-
-// Moves the first realization (in ranked order) whose surface does not cross itself to the front,
-// building surfaces only until one is found; leaves the order when every surface crosses itself.
-void prefer_crossing_free(RealizationSearch& search, TargetSurfaces& surfaces,
-                          TargetGroups& groups);
 
 // A pairing as the manifest (data/regmaps/realizations.json) and the GLB's extras keep it:
 // target, kind, x, y (a, b, c for reflections), apex, distortion, corners and mirrored as

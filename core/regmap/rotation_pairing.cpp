@@ -22,7 +22,9 @@
 // The search: up to Sym(M), P1 is D0's vertex N0 (q_T divides q_M) or face centre M0 (q_T divides
 // p_M) and X turns counterclockwise (a mirror through P1 turns every pairing into one of these).
 // P2 runs over the half-turn centres of M's tiling (edge midpoints, vertices and face centres of
-// even valence) within limits.radius of P1, in one sector of P1's rotations; y is its half-turn,
+// even valence) within a radius of P1 (limits.radius, or by default 1.5 past the distance MN from
+// a vertex to a face centre, cosh MN = cot(pi/p) cot(pi/q), within [4.5, 8]: large p and q put
+// the corners far out), in one sector of P1's rotations; y is its half-turn,
 // and S -> x, R S -> y must extend to an isomorphism onto its image (rotation_images). P3 runs
 // over the centres with the same half-turn y; X' and P4 follow and the polygon is checked.
 #include <algorithm>
@@ -36,6 +38,9 @@
 namespace tessera::regmap {
 
 namespace {
+
+// Quadrilaterals kept per pair (x, y).
+constexpr std::size_t kQuadrilateralsPerRotation = 3;
 
 struct Centre {
   Point point;
@@ -70,6 +75,12 @@ std::array<double, 4> corner_angles(Geometry g, const std::array<Point, 4>& q) {
   for (std::size_t i = 0; i < 4; ++i)
     angle[i] = turn_angle(g, q[i], q[(i + 1) % 4], q[(i + 3) % 4]);
   return angle;
+}
+
+bool same_quadrilateral(Geometry g, const std::array<Point, 4>& u, const std::array<Point, 4>& v) {
+  for (std::size_t i = 0; i < 4; ++i)
+    if (!same_point(g, u[i], v[i])) return false;
+  return true;
 }
 
 bool convex(const std::array<double, 4>& angle, double sign) {
@@ -107,7 +118,8 @@ class RotationFinder {
         target_(target),
         target_group_(target_group),
         limits_(limits),
-        cover_(source) {}
+        cover_(source),
+        radius_(limits.radius > 0 ? limits.radius : automatic_radius(cover_)) {}
 
   PairingSearch run() {
     for (Corner apex : {kN, kM}) {
@@ -122,7 +134,13 @@ class RotationFinder {
   }
 
  private:
-  // The half-turn centres within limits_.radius of p1, by a flood fill of the cover.
+  static double automatic_radius(const Cover& cover) {
+    const CoverTriangle d0;
+    const double mn = distance(cover.geometry(), cover.corner(d0, kM), cover.corner(d0, kN));
+    return std::clamp(mn + 1.5, 4.5, 8.0);
+  }
+
+  // The half-turn centres within radius_ of p1, by a flood fill of the cover.
   std::vector<Centre> centres_near(const Point& p1) {
     const Geometry g = cover_.geometry();
     auto key = [](const Point& z) {
@@ -150,14 +168,14 @@ class RotationFinder {
         const int n = cover_.sectors(c);
         if (n % 2 != 0) continue;
         const Point z = cover_.corner(t, c);
-        if (distance(g, p1, z) > limits_.radius) continue;
+        if (distance(g, p1, z) > radius_) continue;
         auto [it, added] = centres.try_emplace(key(z));
         if (added)
           it->second = {z, words_.conjugate(t.element, source_.times(0, rotation_word(c, n / 2)))};
       }
       for (Side side : kSides) {
         const CoverTriangle next = cover_.across(t, side);
-        if (distance(g, p1, cover_.corner(next, kO)) > limits_.radius + 1.0) continue;
+        if (distance(g, p1, cover_.corner(next, kO)) > radius_ + 1.0) continue;
         if (placed.emplace(key(inside(next)), true).second) queue.push_back(next);
       }
     }
@@ -230,15 +248,21 @@ class RotationFinder {
       longest = std::max(longest, d);
     }
     const double distortion = longest / shortest * (1 + imbalance);
-    for (Pairing& known : result_.pairings) {
-      if (known.x != x || known.y != y) continue;
-      if (distortion < known.distortion) {
-        known.corners = q;
-        known.mirrored = mirrored;
-        known.apex = apex;
-        known.distortion = distortion;
-      }
-      return;
+    // The kQuadrilateralsPerRotation least distorted quadrilaterals of each (x, y): the drawing
+    // may refuse the least distorted (a long one is drawn from points close to the Klein disk's
+    // rim), and the next may draw.
+    std::vector<Pairing>& pairings = result_.pairings;
+    std::size_t same = 0;
+    auto worst = pairings.end();
+    for (auto known = pairings.begin(); known != pairings.end(); ++known) {
+      if (known->x != x || known->y != y) continue;
+      if (same_quadrilateral(g, known->corners, q)) return;  // met again from another lift
+      ++same;
+      if (worst == pairings.end() || known->distortion > worst->distortion) worst = known;
+    }
+    if (same >= kQuadrilateralsPerRotation) {
+      if (distortion >= worst->distortion) return;
+      pairings.erase(worst);
     }
     Pairing p;
     p.target = target_.name;
@@ -259,6 +283,7 @@ class RotationFinder {
   PairingLimits limits_;
   std::map<Element, bool> pairs_with_;  // per half-turn y, for the x of the current apex
   Cover cover_;
+  double radius_;  // P2, P3 within this distance of P1
   PairingSearch result_;
 };
 
