@@ -44,6 +44,19 @@ describe('layoutVerdict', () => {
     expect(layoutVerdict(info).text).toBe('invalid: program P1 found no matching (infeasible; 3 ports no matching of G covers)');
   });
 
+  it('says which limit stopped P1 before any matching, and that a node limit is the same everywhere', () => {
+    const info = { ...SPHERE, valid: false, objective: null, matching_status: 'node_limit', unmatchable_ports: [] };
+    expect(layoutVerdict(info).text).toMatch(/stopped at its node limit: the same on every machine/);
+    const guard = { ...info, matching_status: 'time_limit' };
+    expect(layoutVerdict(guard).text).toMatch(/stopped at its time guard/);
+  });
+
+  it('shows the limit that stopped a feasible matching short of optimal', () => {
+    const { values } = layoutFigures({ info: { ...SPHERE, matching_status: 'feasible', matching_stopped_by: 'node_limit' }, solveSeconds: 1 });
+    expect(values.matching_status).toBe('feasible, stopped by the node limit');
+    expect(layoutFigures({ info: SPHERE, solveSeconds: 1 }).values.matching_status).toBe(SPHERE.matching_status);
+  });
+
   it('says when folded singular rings took ports away', () => {
     const info = {
       ...SPHERE,

@@ -5,6 +5,13 @@ import { formatSeconds } from './map-figures.js';
 // The core's stages in the order they run; it lists their times by name.
 const STAGES = ['separatrices', 'conflicts', 'P1', 'layout', 'check'];
 
+// Why P1 stopped before any matching, in words. The node limit is work, the same on every machine;
+// the time guard is the machine's speed and load.
+const STOPPED = {
+  node_limit: 'stopped at its node limit: the same on every machine; raise --max-solve-nodes natively',
+  time_limit: "stopped at its time guard: this machine's speed decided, a faster or idle one may find one",
+};
+
 /**
  * The checker's verdict on a layout, in words: { valid, text }. info: the core's layout figures
  * (valid, patches, patches_not_quads, problem_count, matching_status, unmatchable_ports,
@@ -21,7 +28,7 @@ export function layoutVerdict(info) {
         ? `; the parameterization folds the rings of ${count(folded)} singularities, leaving them fewer ports than their valence: a smoother field avoids this`
         : '';
     const detail = ports > 0 ? `; ${count(ports)} ports no matching of G covers${foldedDetail}` : '';
-    return { valid: false, text: `invalid: program P1 found no matching (${status}${detail})` };
+    return { valid: false, text: `invalid: program P1 found no matching (${STOPPED[status] ?? status}${detail})` };
   }
   const notQuads = Number(info.patches_not_quads) || 0;
   if (notQuads > 0) {
@@ -60,6 +67,8 @@ export function layoutFigures({ info, solveSeconds }) {
     ...info,
     ports: `${count(info.ports)} (${count(info.virtual_ports)})`,
     solve_seconds: solveSeconds,
+    // A feasible matching that a limit stopped short of optimal says which limit.
+    matching_status: info.matching_stopped_by ? `${info.matching_status}, stopped by the ${info.matching_stopped_by.replace('_', ' ')}` : info.matching_status,
     // The worker solves the slider's positions ahead while idle (presolve.js).
     rounds: `${info.rounds ?? '–'}${info.solved_before ? ', solved ahead' : ''}`,
   };
