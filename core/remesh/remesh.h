@@ -1,0 +1,33 @@
+// A quad mesh from a quad layout (thesis Ch. 8): the integer side lengths (Sec. 8.1,
+// side_lengths.h), the map of each patch onto its rectangle (Sec. 8.2, patch_map.h), and one
+// conforming all-quad mesh out of the grids: the layout's nodes, the points on each side and the
+// points inside each patch are vertices once, so that neighbouring patches share vertex indices.
+//
+// In:  a valid quad layout (layout/quad_layout.h) and the size target.
+// Out: the quad mesh with the face attribute "patch" (the layout's patch of each quad), the
+//      integer lengths, the quality figures (quad_quality.h) and the seconds per step.
+// Throws InputError for an invalid layout or target (naming the patch or side at fault).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "layout/quad_layout.h"
+#include "remesh/quad_quality.h"
+#include "remesh/side_lengths.h"
+
+namespace tessera::remesh {
+
+struct QuadMesh {
+  Mesh mesh;  // all quads; face_attributes["patch"]
+  SideLengths lengths;
+  QuadQuality quality;
+  std::size_t patch_count = 0;          // of the layout
+  std::size_t unlocated_points = 0;     // grid points found in no mapped triangle (patch_map.h)
+  std::size_t irregular_off_nodes = 0;  // irregular vertices that are no node of the layout
+  std::vector<layout::StageSeconds> seconds;
+};
+
+QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& target);
+
+}  // namespace tessera::remesh
