@@ -31,7 +31,9 @@ void print_remesh_help() {
       "  -o FILE              the quad mesh: .obj, .ply, .off, .glb (required)\n"
       "  --json               one JSON object on stdout: quads, vertices, irregular_vertices,\n"
       "                       patches, layout_valid, lambda, chains, min_scaled_jacobian,\n"
-      "                       mean_scaled_jacobian, nonpositive_jacobian_quads, flipped_quads,\n"
+      "                       mean_scaled_jacobian, nonpositive_jacobian_quads,\n"
+      "                       nonpositive_corners (and _at_nodes: at a layout node), "
+      "flipped_quads,\n"
       "                       max_angle_deviation, mean_angle_deviation (degrees), manifold,\n"
       "                       boundary_edges, euler_characteristic, input_euler_characteristic,\n"
       "                       irregular_off_nodes, seconds (per step)\n"
@@ -80,6 +82,8 @@ nlohmann::ordered_json remesh_json(const remesh::QuadMesh& q, long input_euler,
   json["min_scaled_jacobian"] = quality.min_scaled_jacobian;
   json["mean_scaled_jacobian"] = quality.mean_scaled_jacobian;
   json["nonpositive_jacobian_quads"] = quality.nonpositive_jacobian_quads;
+  json["nonpositive_corners"] = quality.nonpositive_corners.size();
+  json["nonpositive_corners_at_nodes"] = q.nonpositive_corners_at_nodes;
   json["flipped_quads"] = quality.flipped_quads;
   json["max_angle_deviation"] = quality.max_angle_deviation;
   json["mean_angle_deviation"] = quality.mean_angle_deviation;

@@ -40,6 +40,7 @@ void corner_figures(const Mesh& mesh, const std::vector<Vector3d>& normal, QuadQ
       const double lengths = e1.norm() * e2.norm();
       const double jacobian = lengths > 0 ? e1.cross(e2).dot(own) / lengths : 0.0;
       least = std::min(least, jacobian);
+      if (jacobian <= 0) q.nonpositive_corners.push_back(v[k]);
       const double angle =
           lengths > 0 ? std::acos(std::clamp(e1.dot(e2) / lengths, -1.0, 1.0)) : 0.0;
       const double deviation = std::abs(angle * 180 / M_PI - 90);

@@ -31,8 +31,9 @@ struct QuadQuality {
   double max_angle_deviation = 0;  // degrees
   double mean_angle_deviation = 0;
   std::size_t irregular_vertices = 0;
-  std::vector<Index> irregular;  // the irregular vertices
-  std::string problem;           // why the mesh is not a manifold, if it is not
+  std::vector<Index> irregular;            // the irregular vertices
+  std::vector<Index> nonpositive_corners;  // the vertices of the quad corners with a Jacobian <= 0
+  std::string problem;                     // why the mesh is not a manifold, if it is not
 };
 
 QuadQuality quad_quality(const Mesh& quads, const std::vector<Eigen::Vector3d>& surface_normal);

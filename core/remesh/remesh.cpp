@@ -135,6 +135,8 @@ QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& targe
   result.quality = quad_quality(out.mesh, out.normal);
   // The base complex of the quad mesh is the layout only if its irregular vertices are nodes.
   for (Index v : result.quality.irregular) result.irregular_off_nodes += !out.is_node[v];
+  for (Index v : result.quality.nonpositive_corners)
+    result.nonpositive_corners_at_nodes += out.is_node[v];
   result.mesh = std::move(out.mesh);
   result.seconds.push_back({"check", seconds_since(start)});
   return result;

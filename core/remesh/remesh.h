@@ -25,6 +25,9 @@ struct QuadMesh {
   std::size_t patch_count = 0;          // of the layout
   std::size_t unlocated_points = 0;     // grid points found in no mapped triangle (patch_map.h)
   std::size_t irregular_off_nodes = 0;  // irregular vertices that are no node of the layout
+  // Quad corners with a scaled Jacobian <= 0 that sit at a node of the layout: where the layout's
+  // own corner is reflex on the surface, which no map of the patch can straighten (Sec. 8.1 end).
+  std::size_t nonpositive_corners_at_nodes = 0;
   std::vector<layout::StageSeconds> seconds;
 };
 
