@@ -28,6 +28,11 @@ void print_remesh_help() {
       "  --edge-length L      quad edges of about L (in the mesh's units) on average\n"
       "  --lambda S           parameter units per quad edge (default 1, as in Sec. 8.3; the\n"
       "                       parameter unit is --h times the bounding-box diagonal)\n"
+      "  --smooth             then relax the whole mesh on the input surface (beyond the thesis:\n"
+      "                       the patch maps are only C0 across sides): every vertex but the\n"
+      "                       layout's nodes and the boundary moves halfway to the mean of its\n"
+      "                       neighbours and back onto the surface, --smooth-rounds times\n"
+      "  --smooth-rounds N    rounds of --smooth (default 10)\n"
       "  -o FILE              the quad mesh: .obj, .ply, .off, .glb (required)\n"
       "  --json               one JSON object on stdout: quads, vertices, irregular_vertices,\n"
       "                       patches, layout_valid, lambda, chains, min_scaled_jacobian,\n"
@@ -124,8 +129,9 @@ int remesh_command(const Args& args) {
   std::set<std::string> values = mesh_input_options();
   values.merge(field_input_options());
   values.merge(layout_input_options());
-  values.insert({"--quads", "--edge-length", "--lambda", "-o"});
-  const ParsedArgs parsed = parse_args(args, values, {"--json", "--help", "-h"}, "remesh");
+  values.insert({"--quads", "--edge-length", "--lambda", "--smooth-rounds", "-o"});
+  const ParsedArgs parsed =
+      parse_args(args, values, {"--json", "--smooth", "--help", "-h"}, "remesh");
   if (parsed.has("--help") || parsed.has("-h")) {
     print_remesh_help();
     return 0;
@@ -135,6 +141,9 @@ int remesh_command(const Args& args) {
   if (!parsed.has("-o")) throw UsageError("'tessera remesh' needs an output file: -o out.obj");
   check_mesh_format(parsed.value("-o"));
   const remesh::SizeTarget target = size_target(parsed);
+  const std::size_t rounds = parsed.count("--smooth-rounds", 10);
+  if (rounds > 1000) throw UsageError("--smooth-rounds expects a count up to 1000");
+  const int smoothing_rounds = parsed.has("--smooth") ? static_cast<int>(rounds) : 0;
   const double alpha = layout_alpha(parsed);
   const ParamOptions param_options = layout_param_options(parsed);
   const layout::LayoutOptions options = layout_options(parsed);
@@ -156,7 +165,7 @@ int remesh_command(const Args& args) {
   const layout::QuadLayout layout =
       layout::solve_layout(charts, graph, alpha, solver, options.limits, progress);
   seconds["layout"] = seconds_since(start);
-  const remesh::QuadMesh quads = remesh::remesh_layout(layout, target);
+  const remesh::QuadMesh quads = remesh::remesh_layout(layout, target, smoothing_rounds, &mesh);
   for (const layout::StageSeconds& s : quads.seconds) seconds[s.stage] = s.seconds;
   start = std::chrono::steady_clock::now();
   write_mesh_file(parsed.value("-o"), quads.mesh);

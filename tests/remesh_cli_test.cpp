@@ -62,13 +62,29 @@ TEST(CliRemesh, QuadsOptionChangesTheCount) {
   EXPECT_EQ(few["patches"], many["patches"]);
 }
 
+TEST(CliRemesh, SmoothKeepsTheMeshAndAddsItsStep) {
+  const std::string path = write_temp_file("remesh_smooth.obj", write_obj(icosphere(3)));
+  const std::string obj = temp_path("remesh_smooth_quads.obj");
+  const auto plain = remesh_json(quoted(path) + " --alpha 10 --quads 600 -o " + quoted(obj));
+  const auto smooth =
+      remesh_json(quoted(path) + " --alpha 10 --quads 600 --smooth -o " + quoted(obj));
+  EXPECT_EQ(smooth["quads"], plain["quads"]);
+  EXPECT_EQ(smooth["irregular_vertices"], plain["irregular_vertices"]);
+  EXPECT_EQ(smooth["flipped_quads"], 0);
+  EXPECT_GE(smooth["min_scaled_jacobian"].get<double>(),
+            std::min(plain["min_scaled_jacobian"].get<double>(), 0.5) - 1e-12);
+  EXPECT_TRUE(smooth["seconds"].contains("smoothing"));
+  EXPECT_FALSE(plain["seconds"].contains("smoothing"));
+}
+
 TEST(CliRemesh, BadOptionsExitWithTwo) {
   const std::string path = write_temp_file("remesh_bad.obj", write_obj(icosphere(2)));
   const std::string obj = temp_path("remesh_bad_out.obj");
   for (const std::string& arguments :
        {"remesh " + quoted(path), "remesh " + quoted(path) + " --quads 0 -o " + quoted(obj),
         "remesh " + quoted(path) + " --quads 10 --edge-length 1 -o " + quoted(obj),
-        "remesh " + quoted(path) + " -o out.xyz", "remesh --quads 10 -o " + quoted(obj)}) {
+        "remesh " + quoted(path) + " -o out.xyz", "remesh --quads 10 -o " + quoted(obj),
+        "remesh " + quoted(path) + " --smooth --smooth-rounds x -o " + quoted(obj)}) {
     const auto result = run_cli(arguments, true);
     EXPECT_EQ(result.exit_code, 2) << arguments << "\n" << result.out;
     EXPECT_NE(result.out.find("error"), std::string::npos) << arguments;

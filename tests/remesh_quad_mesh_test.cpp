@@ -5,6 +5,7 @@
 // layout's patches, no flipped quad, a positive scaled Jacobian, irregular vertices only at nodes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -12,6 +13,7 @@
 #include "mesh/shapes.h"
 #include "remesh/patch_map.h"
 #include "remesh/remesh.h"
+#include "remesh/smoothing.h"
 
 namespace tessera {
 namespace {
@@ -164,6 +166,42 @@ TEST(Remesh, SphereAtAlphaFiveIsConformingWithoutFlips) {
   EXPECT_EQ(q.quality.flipped_quads, 0u);
   EXPECT_EQ(q.irregular_off_nodes, 0u);
   EXPECT_EQ(q.quality.irregular_vertices, 8u);  // the eight singularities of valence 3
+}
+
+TEST(Remesh, NearestPointOnATriangle) {
+  const Eigen::Vector3d a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
+  EXPECT_NEAR(
+      (remesh::nearest_on_triangle({0.5, 0.5, 3}, a, b, c) - Eigen::Vector3d(0.5, 0.5, 0)).norm(),
+      0, 1e-12);
+  EXPECT_NEAR((remesh::nearest_on_triangle({-1, -1, 1}, a, b, c) - a).norm(), 0, 1e-12);
+  EXPECT_NEAR((remesh::nearest_on_triangle({1, -3, 0}, a, b, c) - Eigen::Vector3d(1, 0, 0)).norm(),
+              0, 1e-12);
+  EXPECT_NEAR((remesh::nearest_on_triangle({2, 2, 0}, a, b, c) - Eigen::Vector3d(1, 1, 0)).norm(),
+              0, 1e-12);
+}
+
+// The smoothing pass keeps the connectivity and the nodes, keeps every vertex on the surface (the
+// unit sphere, up to its triangles' sag), flips nothing and lowers no quad below min(its
+// minimum, 0.5).
+TEST(Remesh, SmoothingKeepsTheMeshOnTheSurfaceAndNeverWorsensTheMinimum) {
+  const LayoutRun run = run_layout(icosphere(3), 5);
+  remesh::SizeTarget target;
+  target.quads = 800;
+  const remesh::QuadMesh plain = remesh::remesh_layout(run.layout, target);
+  const remesh::QuadMesh smooth = remesh::remesh_layout(run.layout, target, 10, &run.input.mesh);
+  ASSERT_EQ(smooth.mesh.face_vertices, plain.mesh.face_vertices);
+  EXPECT_EQ(smooth.quality.flipped_quads, 0u);
+  EXPECT_GE(smooth.quality.min_scaled_jacobian,
+            std::min(plain.quality.min_scaled_jacobian, 0.5) - 1e-12);
+  EXPECT_GT(smooth.seconds.size(), plain.seconds.size());
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < smooth.mesh.vertex_count(); ++v) {
+    EXPECT_NEAR(smooth.mesh.positions[v].norm(), 1, 0.01) << v;
+    moved += (smooth.mesh.positions[v] - plain.mesh.positions[v]).norm() > 1e-9;
+  }
+  EXPECT_GT(moved, smooth.mesh.vertex_count() / 2);
+  for (Index v : plain.quality.irregular)
+    EXPECT_EQ(smooth.mesh.positions[v], plain.mesh.positions[v]);  // nodes stay
 }
 
 TEST(Remesh, InvalidLayoutIsAnInputErrorNamingTheProblem) {

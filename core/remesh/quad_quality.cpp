@@ -22,6 +22,15 @@ Vector3d polygon_normal(const Mesh& mesh, std::size_t f) {
   return n;
 }
 
+double corner_jacobian(const Mesh& mesh, std::size_t f, std::size_t k, const Vector3d& own) {
+  const auto v = mesh.face(f);
+  const Vector3d& x = mesh.positions[v[k]];
+  const Vector3d e1 = mesh.positions[v[(k + 1) % v.size()]] - x;
+  const Vector3d e2 = mesh.positions[v[(k + v.size() - 1) % v.size()]] - x;
+  const double lengths = e1.norm() * e2.norm();
+  return lengths > 0 ? e1.cross(e2).dot(own) / lengths : 0.0;
+}
+
 void corner_figures(const Mesh& mesh, const std::vector<Vector3d>& normal, QuadQuality& q) {
   q.min_scaled_jacobian = 1;
   double jacobian_sum = 0, deviation_sum = 0;
@@ -38,7 +47,7 @@ void corner_figures(const Mesh& mesh, const std::vector<Vector3d>& normal, QuadQ
       const Vector3d e1 = mesh.positions[v[(k + 1) % v.size()]] - x;
       const Vector3d e2 = mesh.positions[v[(k + v.size() - 1) % v.size()]] - x;
       const double lengths = e1.norm() * e2.norm();
-      const double jacobian = lengths > 0 ? e1.cross(e2).dot(own) / lengths : 0.0;
+      const double jacobian = corner_jacobian(mesh, f, k, own);
       least = std::min(least, jacobian);
       if (jacobian <= 0) q.nonpositive_corners.push_back(v[k]);
       const double angle =
@@ -77,6 +86,17 @@ void topology_figures(const Mesh& mesh, QuadQuality& q) {
 }
 
 }  // namespace
+
+double least_scaled_jacobian(const Mesh& mesh, std::size_t f, const std::vector<Vector3d>& normal) {
+  Vector3d reference = Vector3d::Zero();
+  for (Index i : mesh.face(f)) reference += normal[i];
+  const Vector3d own = polygon_normal(mesh, f).normalized();
+  if (!(own.dot(reference) > 0)) return -1;
+  double least = 1;
+  for (std::size_t k = 0; k < mesh.face_size(f); ++k)
+    least = std::min(least, corner_jacobian(mesh, f, k, own));
+  return least;
+}
 
 QuadQuality quad_quality(const Mesh& quads, const std::vector<Vector3d>& surface_normal) {
   QuadQuality q;

@@ -36,6 +36,10 @@ struct QuadQuality {
   std::string problem;                     // why the mesh is not a manifold, if it is not
 };
 
+// The least scaled Jacobian over the corners of face f, and -1 if the face is flipped.
+double least_scaled_jacobian(const Mesh& mesh, std::size_t f,
+                             const std::vector<Eigen::Vector3d>& surface_normal);
+
 QuadQuality quad_quality(const Mesh& quads, const std::vector<Eigen::Vector3d>& surface_normal);
 
 }  // namespace tessera::remesh

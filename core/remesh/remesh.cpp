@@ -1,10 +1,12 @@
 #include "remesh/remesh.h"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 
 #include "remesh/patch_map.h"
 #include "remesh/patch_sides.h"
+#include "remesh/smoothing.h"
 
 namespace tessera::remesh {
 namespace {
@@ -74,6 +76,19 @@ struct PatchGrid {
   }
 };
 
+// The vertices on boundary edges (an edge of one quad only).
+std::vector<Index> boundary_vertices(const Mesh& quads) {
+  std::map<std::pair<Index, Index>, int> uses;
+  for (std::size_t f = 0; f < quads.face_count(); ++f) {
+    const auto v = quads.face(f);
+    for (std::size_t k = 0; k < v.size(); ++k) ++uses[std::minmax(v[k], v[(k + 1) % v.size()])];
+  }
+  std::vector<Index> result;
+  for (const auto& [edge, count] : uses)
+    if (count == 1) result.insert(result.end(), {edge.first, edge.second});
+  return result;
+}
+
 std::vector<std::vector<Index>> faces_by_patch(const Mesh& refined, std::size_t patch_count) {
   std::vector<std::vector<Index>> faces(patch_count);
   const std::vector<std::int32_t>& patch = refined.face_attributes.at("patch");
@@ -114,7 +129,8 @@ std::size_t extract_quads(const layout::QuadLayout& layout, const Connectivity& 
 
 }  // namespace
 
-QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& target) {
+QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& target,
+                       int smoothing_rounds, const Mesh* surface) {
   QuadMesh result;
   result.patch_count = layout.check.patch_count;
   auto start = Clock::now();
@@ -130,6 +146,15 @@ QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& targe
   QuadBuilder out;
   result.unlocated_points = extract_quads(layout, c, sides, result.lengths, out);
   result.seconds.push_back({"patch maps", seconds_since(start)});
+
+  if (smoothing_rounds > 0) {
+    start = Clock::now();
+    std::vector<bool> fixed = out.is_node;
+    for (Index v : boundary_vertices(out.mesh)) fixed[v] = true;
+    smooth_on_surface(out.mesh, out.normal, fixed, surface ? *surface : layout.refined.mesh,
+                      smoothing_rounds);
+    result.seconds.push_back({"smoothing", seconds_since(start)});
+  }
 
   start = Clock::now();
   result.quality = quad_quality(out.mesh, out.normal);

@@ -3,7 +3,7 @@
 // conforming all-quad mesh out of the grids: the layout's nodes, the points on each side and the
 // points inside each patch are vertices once, so that neighbouring patches share vertex indices.
 //
-// In:  a valid quad layout (layout/quad_layout.h) and the size target.
+// In:  a valid quad layout (layout/quad_layout.h), the size target, optionally smoothing rounds.
 // Out: the quad mesh with the face attribute "patch" (the layout's patch of each quad), the
 //      integer lengths, the quality figures (quad_quality.h) and the seconds per step.
 // Throws InputError for an invalid layout or target (naming the patch or side at fault).
@@ -31,6 +31,9 @@ struct QuadMesh {
   std::vector<layout::StageSeconds> seconds;
 };
 
-QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& target);
+// `smoothing_rounds` > 0: that many rounds of smooth_on_surface() (smoothing.h) over the input
+// surface `surface` (the layout's input mesh) before the quality figures.
+QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& target,
+                       int smoothing_rounds = 0, const Mesh* surface = nullptr);
 
 }  // namespace tessera::remesh
