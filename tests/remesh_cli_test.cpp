@@ -52,6 +52,16 @@ TEST(CliRemesh, WritesAClosedQuadMeshWithTheLayoutsPatches) {
   EXPECT_EQ(*std::max_element(patch.begin(), patch.end()) + 1, json["patches"].get<int>());
 }
 
+TEST(CliRemesh, WritesGlbWithThePatchAttribute) {
+  const std::string path = write_temp_file("remesh_glb.obj", write_obj(icosphere(3)));
+  const std::string glb = temp_path("remesh_quads.glb");
+  remesh_json(quoted(path) + " --alpha 10 --quads 400 -o " + quoted(glb));
+  const std::vector<std::uint8_t> bytes = read_file_bytes(glb, Limits{});
+  const std::string text(bytes.begin(), bytes.end());
+  EXPECT_EQ(text.substr(0, 4), "glTF");
+  EXPECT_NE(text.find("_PATCH"), std::string::npos);
+}
+
 TEST(CliRemesh, QuadsOptionChangesTheCount) {
   const std::string path = write_temp_file("remesh_sphere.obj", write_obj(icosphere(3)));
   const std::string obj = temp_path("remesh_sphere_quads.obj");
