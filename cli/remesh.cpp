@@ -35,7 +35,9 @@ void print_remesh_help() {
       "  --smooth-rounds N    rounds of --smooth (default 10)\n"
       "  -o FILE              the quad mesh: .obj, .ply, .off, .glb (required)\n"
       "  --json               one JSON object on stdout: quads, vertices, irregular_vertices,\n"
-      "                       patches, layout_valid, lambda, chains, min_scaled_jacobian,\n"
+      "                       patches, layout_valid, lambda, chains, compressed_sides (sides\n"
+      "                       whose chain gives them quads 4 times shorter than the rest, Fig.\n"
+      "                       8.1), min_scaled_jacobian,\n"
       "                       mean_scaled_jacobian, nonpositive_jacobian_quads,\n"
       "                       nonpositive_corners (and _at_nodes: at a layout node), "
       "flipped_quads,\n"
@@ -84,6 +86,7 @@ nlohmann::ordered_json remesh_json(const remesh::QuadMesh& q, long input_euler,
   json["layout_valid"] = true;
   json["lambda"] = q.lengths.lambda;
   json["chains"] = q.lengths.segments.size();
+  json["compressed_sides"] = remesh::compressed_sides(q.lengths).size();
   json["min_scaled_jacobian"] = quality.min_scaled_jacobian;
   json["mean_scaled_jacobian"] = quality.mean_scaled_jacobian;
   json["nonpositive_jacobian_quads"] = quality.nonpositive_jacobian_quads;

@@ -108,6 +108,16 @@ TEST(Remesh, OppositeSidesGetTheSameLength) {
         << "chain " << k;
 }
 
+TEST(Remesh, CompressedSidesAreTheSidesFarShorterThanTheirQuads) {
+  remesh::SideLengths lengths;
+  lengths.length = {10, 1, 9, 10};
+  lengths.chain = {0, 0, 0, 1};
+  lengths.segments = {7, 10};
+  lengths.lambda = 1;
+  EXPECT_EQ(remesh::compressed_sides(lengths), std::vector<std::size_t>{1});
+  EXPECT_TRUE(remesh::compressed_sides(lengths, 10).empty());
+}
+
 TEST(Remesh, SphereGivesAGoodQuadMesh) {
   remesh::SizeTarget target;
   target.quads = 600;

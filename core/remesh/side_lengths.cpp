@@ -95,6 +95,14 @@ std::size_t SideLengths::quad_count() const {
   return quads;
 }
 
+std::vector<std::size_t> compressed_sides(const SideLengths& lengths, double factor) {
+  std::vector<std::size_t> result;
+  for (std::size_t i = 0; i < lengths.length.size(); ++i)
+    if (lengths.lambda * lengths.segments[lengths.chain[i]] > factor * lengths.length[i])
+      result.push_back(i);
+  return result;
+}
+
 std::vector<std::size_t> side_chains(const PatchSides& sides, std::size_t& chain_count) {
   DisjointSets sets(sides.sides.size());
   for (const auto& patch : sides.patches) {

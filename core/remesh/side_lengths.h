@@ -37,6 +37,12 @@ struct SideLengths {
 // The chains of opposite sides (union-find): per side its chain, numbered 0.. in side order.
 std::vector<std::size_t> side_chains(const PatchSides& sides, std::size_t& chain_count);
 
+// The sides that their chain squeezes: lambda n above `factor` times their own length (Fig. 8.1:
+// a strip of patches whose sides differ much gets a grid too fine on its short sides). A layout
+// side of nearly zero length (a patch that is almost a triangle on the surface) shows here, and
+// the quads along it are degenerate.
+std::vector<std::size_t> compressed_sides(const SideLengths& lengths, double factor = 4);
+
 SideLengths integer_side_lengths(const PatchSides& sides, std::vector<double> length,
                                  std::vector<double> length_3d, const SizeTarget& target);
 
