@@ -10,6 +10,7 @@
 #include "field_input.h"
 #include "layout_input.h"
 #include "mesh_input.h"
+#include "remesh/hausdorff.h"
 #include "remesh/remesh.h"
 
 namespace tessera::cli {
@@ -43,7 +44,9 @@ void print_remesh_help() {
       "flipped_quads,\n"
       "                       max_angle_deviation, mean_angle_deviation (degrees), manifold,\n"
       "                       boundary_edges, euler_characteristic, input_euler_characteristic,\n"
-      "                       irregular_off_nodes, seconds (per step)\n"
+      "                       irregular_off_nodes, hausdorff_relative (the distance between\n"
+      "                       the quad mesh and the input, sampled at both meshes' vertices and\n"
+      "                       face centroids, over the bounding-box diagonal), seconds (per step)\n"
       "%s%s%s\n"
       "Exit codes: 0 ok, 1 internal error, 2 bad input (also a layout the checker rejects: the\n"
       "message names its first problem; try another --alpha).\n",
@@ -75,7 +78,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-nlohmann::ordered_json remesh_json(const remesh::QuadMesh& q, long input_euler,
+nlohmann::ordered_json remesh_json(const remesh::QuadMesh& q, long input_euler, double hausdorff,
                                    const nlohmann::ordered_json& seconds) {
   const remesh::QuadQuality& quality = q.quality;
   nlohmann::ordered_json json;
@@ -100,6 +103,7 @@ nlohmann::ordered_json remesh_json(const remesh::QuadMesh& q, long input_euler,
   json["euler_characteristic"] = quality.euler_characteristic;
   json["input_euler_characteristic"] = input_euler;
   json["irregular_off_nodes"] = q.irregular_off_nodes;
+  json["hausdorff_relative"] = hausdorff;
   json["seconds"] = seconds;
   return json;
 }
@@ -171,11 +175,14 @@ int remesh_command(const Args& args) {
   const remesh::QuadMesh quads = remesh::remesh_layout(layout, target, smoothing_rounds, &mesh);
   for (const layout::StageSeconds& s : quads.seconds) seconds[s.stage] = s.seconds;
   start = std::chrono::steady_clock::now();
+  const double hausdorff = remesh::relative_hausdorff(mesh, quads.mesh);
+  seconds["hausdorff"] = seconds_since(start);
+  start = std::chrono::steady_clock::now();
   write_mesh_file(parsed.value("-o"), quads.mesh);
   seconds["write"] = seconds_since(start);
 
   const nlohmann::ordered_json json =
-      remesh_json(quads, euler_characteristic(mesh, connectivity), seconds);
+      remesh_json(quads, euler_characteristic(mesh, connectivity), hausdorff, seconds);
   std::printf("%s",
               parsed.has("--json") ? (json.dump(2) + "\n").c_str() : remesh_text(json).c_str());
   return 0;

@@ -70,6 +70,9 @@ TEST(CliRemesh, QuadsOptionChangesTheCount) {
   EXPECT_NEAR(few["quads"].get<double>(), 300, 60);
   EXPECT_NEAR(many["quads"].get<double>(), 3000, 300);
   EXPECT_EQ(few["patches"], many["patches"]);
+  // Finer quads follow the sphere closer.
+  EXPECT_LT(many["hausdorff_relative"].get<double>(), few["hausdorff_relative"].get<double>());
+  EXPECT_LT(many["hausdorff_relative"].get<double>(), 0.01);
 }
 
 TEST(CliRemesh, SmoothKeepsTheMeshAndAddsItsStep) {

@@ -11,6 +11,7 @@
 
 #include "layout_test_util.h"
 #include "mesh/shapes.h"
+#include "remesh/hausdorff.h"
 #include "remesh/patch_map.h"
 #include "remesh/remesh.h"
 #include "remesh/smoothing.h"
@@ -212,6 +213,18 @@ TEST(Remesh, SmoothingKeepsTheMeshOnTheSurfaceAndNeverWorsensTheMinimum) {
   EXPECT_GT(moved, smooth.mesh.vertex_count() / 2);
   for (Index v : plain.quality.irregular)
     EXPECT_EQ(smooth.mesh.positions[v], plain.mesh.positions[v]);  // nodes stay
+}
+
+TEST(Remesh, HausdorffDistanceOfSpheres) {
+  const Mesh unit = icosphere(2);
+  EXPECT_NEAR(remesh::relative_hausdorff(unit, unit), 0, 1e-12);
+  Mesh larger = unit;
+  for (Eigen::Vector3d& x : larger.positions) x *= 1.1;
+  // 0.1 apart at the vertices (more at the larger sphere's vertices against the unit sphere's
+  // flat triangles), over the diagonal 2 sqrt(3) of the unit sphere's box.
+  const double d = remesh::relative_hausdorff(unit, larger);
+  EXPECT_GE(d, 0.1 / (2 * std::sqrt(3.0)) - 1e-9);
+  EXPECT_LT(d, 0.15 / (2 * std::sqrt(3.0)));
 }
 
 TEST(Remesh, InvalidLayoutIsAnInputErrorNamingTheProblem) {
