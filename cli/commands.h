@@ -18,5 +18,6 @@ int param_command(const Args& args);
 int solve_command(const Args& args);
 int reduce_command(const Args& args);
 int layout_command(const Args& args);
+int remesh_command(const Args& args);
 
 }  // namespace tessera::cli

@@ -13,6 +13,7 @@
 #include "layout/layout_json.h"
 #include "layout/layout_scene.h"
 #include "layout/p1.h"
+#include "layout_input.h"
 #include "matching/instance_json.h"
 #include "matching/instance_lp.h"
 #include "mesh_input.h"
@@ -32,14 +33,6 @@ void print_layout_help() {
       "of the port graph by the ratio test with singularity-free triangles, the illegal\n"
       "crossings, program P1 solved exactly, the mesh cut along the chosen arcs into patches,\n"
       "and the project's validity check (every patch a disk with four corners).\n\n"
-      "  --alpha A            edge weight L_base + A * L_height (default 5; 0 gives the coarsest\n"
-      "                       layout, larger values follow the field more closely)\n"
-      "  --rho R              spiral test threshold (default 10)\n"
-      "  --length-factor F    separatrices grow to L_max = F * diameter / h (default 3, Sec. "
-      "6.8);\n"
-      "                       doubled while G has no perfect matching\n"
-      "  --solver S           P1 solver: exact (default), glpk (the plain model) or glpk-tuned\n"
-      "  --h REL              parameter unit as a fraction of the bounding-box diagonal (0.01)\n"
       "  -o FILE.glb          the refined mesh coloured by patch with a per-face _PATCH\n"
       "                       attribute, the arcs as lines, the singularities as points\n"
       "  --ply FILE.ply       the refined mesh with an integer face property 'patch'\n"
@@ -58,38 +51,10 @@ void print_layout_help() {
       "                       folded_singularities,\n"
       "                       average_separatrix_length, problems (the first 12),\n"
       "                       problem_count\n"
-      "  --max-trace-steps N  faces crossed by all separatrices together (default 20000000)\n"
-      "  --max-trace-crossings N  crossings they find together (default 20000000)\n"
-      "  --max-solve-nodes N  branch-and-bound nodes of program P1, its loop rounds included\n"
-      "                       (default 5000; at the limit the best matching found is used,\n"
-      "                       matching_stopped_by says node_limit)\n"
-      "  --max-trace-seconds S, --max-solve-seconds S\n"
-      "                       time guards (default 1800 each), far above what the limits above\n"
-      "                       take: the counts make the result the same on every run and\n"
-      "                       machine; a result a guard stops depends on the machine's load, and\n"
-      "                       says so (tracing: an error; P1: matching_stopped_by time_guard)\n"
-      "%s%s\n"
+      "%s%s%s\n"
       "Exit codes: 0 ok (also for a layout the checker rejects: 'valid' says so), 1 internal\n"
       "error, 2 bad input (the message says what and where).\n",
-      kFieldInputHelp, kMeshInputHelp);
-}
-
-layout::LayoutOptions layout_options(const ParsedArgs& parsed) {
-  layout::LayoutOptions options;
-  options.rho = parsed.number("--rho", options.rho);
-  if (!(options.rho > 1)) throw UsageError("--rho expects a number above 1");
-  options.length_factor = parsed.number("--length-factor", options.length_factor);
-  if (!(options.length_factor > 0) || options.length_factor > 1e3)
-    throw UsageError("--length-factor expects a number in (0, 1000]");
-  Limits& limits = options.limits;
-  limits.max_trace_steps = parsed.count("--max-trace-steps", limits.max_trace_steps);
-  limits.max_trace_crossings = parsed.count("--max-trace-crossings", limits.max_trace_crossings);
-  limits.max_solve_nodes = parsed.count("--max-solve-nodes", limits.max_solve_nodes);
-  limits.max_trace_seconds = parsed.number("--max-trace-seconds", limits.max_trace_seconds);
-  limits.max_solve_seconds = parsed.number("--max-solve-seconds", limits.max_solve_seconds);
-  if (!(limits.max_trace_seconds > 0) || !(limits.max_solve_seconds > 0))
-    throw UsageError("--max-trace-seconds and --max-solve-seconds expect positive numbers");
-  return options;
+      kLayoutInputHelp, kFieldInputHelp, kMeshInputHelp);
 }
 
 // Why P1 has no solution: its time ran out before a matching was found, or G has no perfect
@@ -181,9 +146,8 @@ void export_loop_rounds(const std::string& dir, const std::string& mesh_path,
 int layout_command(const Args& args) {
   std::set<std::string> values = mesh_input_options();
   values.merge(field_input_options());
-  values.insert({"--alpha", "--rho", "--length-factor", "--h", "-o", "--ply", "--solver",
-                 "--export-p1", "--max-trace-steps", "--max-trace-crossings", "--max-trace-seconds",
-                 "--max-solve-nodes", "--max-solve-seconds"});
+  values.merge(layout_input_options());
+  values.insert({"-o", "--ply", "--export-p1"});
   const ParsedArgs parsed = parse_args(args, values, {"--json", "--help", "-h"}, "layout");
   if (parsed.has("--help") || parsed.has("-h")) {
     print_layout_help();
@@ -191,14 +155,10 @@ int layout_command(const Args& args) {
   }
   if (parsed.positional.size() != 1)
     throw UsageError("'tessera layout' takes one mesh file; run 'tessera layout --help'");
-  const double alpha = parsed.number("--alpha", 5);
-  if (!(alpha >= 0)) throw UsageError("--alpha expects a number >= 0");
-  ParamOptions param_options;
-  param_options.h_relative = parsed.number("--h", param_options.h_relative);
-  if (!(param_options.h_relative > 0)) throw UsageError("--h expects a positive number");
+  const double alpha = layout_alpha(parsed);
+  const ParamOptions param_options = layout_param_options(parsed);
   const layout::LayoutOptions options = layout_options(parsed);
-  const matching::SolverKind solver =
-      matching::solver_kind_from_name(parsed.value("--solver", "exact"));
+  const matching::SolverKind solver = layout_solver(parsed);
 
   const Mesh mesh = load_triangle_mesh_argument(parsed.positional[0], parsed);
   const Progress progress = stderr_progress();

@@ -26,6 +26,7 @@ constexpr Command kCommands[] = {
     {"solve", tessera::cli::solve_command, "program P1: the conflict-free min-weight matching"},
     {"reduce", tessera::cli::reduce_command, "program P1 without the edges a bound rules out"},
     {"layout", tessera::cli::layout_command, "quad layout by a perfect matching of the ports"},
+    {"remesh", tessera::cli::remesh_command, "a quad mesh from the quad layout (Ch. 8)"},
 };
 
 void print_help() {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "mesh/text_scan.h"
+#include "base/text_scan.h"
 
 namespace tessera {
 namespace {

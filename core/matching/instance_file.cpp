@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cctype>
 
+#include "base/read_file.h"
 #include "matching/instance_json.h"
 #include "matching/instance_lp.h"
-#include "mesh/readers.h"
 
 namespace tessera::matching {
 

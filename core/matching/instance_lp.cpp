@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "base/error.h"
+#include "base/text_scan.h"
 #include "export/byte_writer.h"
-#include "mesh/text_scan.h"
 
 namespace tessera::matching {
 

@@ -1,13 +1,12 @@
 // The format dispatch: extension first, content second.
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <string_view>
 
 #include "base/error.h"
 #include "base/file_name.h"
+#include "base/text_scan.h"
 #include "mesh/readers.h"
-#include "mesh/text_scan.h"
 
 namespace tessera {
 namespace {
@@ -83,20 +82,6 @@ Mesh read_mesh(Bytes bytes, const std::string& file_name, const Limits& limits,
       return read_gltf(bytes, file_name, limits, base_dir);
   }
   throw Error("unknown mesh format");
-}
-
-std::vector<std::uint8_t> read_file_bytes(const std::string& path, const Limits& limits) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw InputError("cannot open " + path + ": no such file, or not readable");
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw InputError("cannot read " + path + ": is it a directory?");
-  check_limit(static_cast<std::size_t>(size), limits.max_file_bytes, path + " (bytes)",
-              "--max-file-bytes");
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), size))
-    throw InputError("cannot read " + path + ": is it a directory, or was it changed while read?");
-  return bytes;
 }
 
 Mesh read_mesh_file(const std::string& path, const Limits& limits) {

@@ -4,8 +4,8 @@
 #include <string_view>
 
 #include "base/error.h"
+#include "base/text_scan.h"
 #include "mesh/readers.h"
-#include "mesh/text_scan.h"
 
 namespace tessera {
 namespace {

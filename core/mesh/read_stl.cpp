@@ -6,10 +6,10 @@
 #include <string_view>
 
 #include "base/error.h"
+#include "base/text_scan.h"
 #include "mesh/byte_reader.h"
 #include "mesh/exact_welder.h"
 #include "mesh/readers.h"
-#include "mesh/text_scan.h"
 
 namespace tessera {
 namespace {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "base/limits.h"
+#include "base/read_file.h"
 #include "mesh/mesh.h"
 
 namespace tessera {
@@ -48,10 +49,6 @@ MeshFormat detect_mesh_format(Bytes bytes, const std::string& file_name);
 // Checks the size limit and refuses empty or blank files, then dispatches on detect_mesh_format().
 Mesh read_mesh(Bytes bytes, const std::string& file_name, const Limits& limits,
                const std::string& base_dir = "");
-
-// The whole file; throws ParseError if it cannot be read, LimitError if it is above
-// limits.max_file_bytes (checked before reading).
-std::vector<std::uint8_t> read_file_bytes(const std::string& path, const Limits& limits);
 
 // read_file_bytes() + read_mesh(), with external glTF buffers looked up beside the file.
 Mesh read_mesh_file(const std::string& path, const Limits& limits);

@@ -145,4 +145,15 @@ TriangleGrid::Hit TriangleGrid::first_hit(const Vector3d& origin, const Vector3d
   return hit;
 }
 
+void TriangleGrid::for_each_triangle_near(const Vector3d& p, double radius,
+                                          const std::function<void(std::uint32_t)>& visit) const {
+  const Vector3d r = Vector3d::Constant(radius);
+  const Cell a = cell_of(p - r), b = cell_of(p + r);
+  for (std::int64_t x = a[0]; x <= b[0]; ++x)
+    for (std::int64_t y = a[1]; y <= b[1]; ++y)
+      for (std::int64_t z = a[2]; z <= b[2]; ++z)
+        if (const auto found = cells_.find(key({x, y, z})); found != cells_.end())
+          for (std::uint32_t t : found->second) visit(t);
+}
+
 }  // namespace tessera

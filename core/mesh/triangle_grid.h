@@ -1,6 +1,7 @@
 // A uniform grid over the triangles of a mesh (polygons fanned from their first corner), for the
 // queries that look at triangles near each other: pairs of triangles whose bounding boxes overlap
-// (self_intersection.h) and the first triangle a ray meets (export/print_check.h).
+// (self_intersection.h), the first triangle a ray meets (export/print_check.h) and the triangles
+// near a point (remesh/smoothing.h).
 //
 // In:  a mesh with indices in range.
 // Out: the triangles (corners, face, bounding box) and, per grid cell, the triangles whose
@@ -51,6 +52,11 @@ class TriangleGrid {
   };
   Hit first_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                 double max_distance, Index skip) const;
+
+  // Every triangle whose bounding box reaches a cell that the cube of half-width `radius` around
+  // `p` reaches, as visit(triangle) (a triangle in several such cells is visited once per cell).
+  void for_each_triangle_near(const Eigen::Vector3d& p, double radius,
+                              const std::function<void(std::uint32_t)>& visit) const;
 
   std::vector<std::array<Index, 3>> corners;  // per triangle, its mesh vertices
   std::vector<Index> face;                    // per triangle, its mesh face

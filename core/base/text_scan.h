@@ -1,7 +1,8 @@
-// Scanning text mesh formats (OBJ, OFF, ASCII PLY, ASCII STL) straight from a byte buffer: no NUL
-// termination is assumed and nothing is read past the buffer's end. Numbers are parsed with
-// std::from_chars where the standard library has it for floating point (glibc builds), and with a
-// bounded strtod otherwise (Emscripten's libc++ lacks it), so one code path serves both builds.
+// Scanning text formats (the mesh formats OBJ, OFF, ASCII PLY, ASCII STL; field files; CPLEX LP)
+// straight from a byte buffer: no NUL termination is assumed and nothing is read past the buffer's
+// end. Numbers are parsed with std::from_chars where the standard library has it for floating point
+// (glibc builds), and with a bounded strtod otherwise (Emscripten's libc++ lacks it), so one code
+// path serves both builds.
 #pragma once
 
 #include <cstddef>

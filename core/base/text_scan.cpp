@@ -1,4 +1,4 @@
-#include "mesh/text_scan.h"
+#include "base/text_scan.h"
 
 #include <cerrno>
 #include <charconv>
