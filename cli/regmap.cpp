@@ -484,48 +484,6 @@ int surface(const Args& args) {
   return 0;
 }
 
-// The best realization on the named target, or on every target of the genus; InputError naming
-// the targets tried otherwise.
-// M drawn on the best target that draws it right (--on names the one to try).
-regmap::DrawnMap draw_on_best_target(const regmap::FiniteGroup& source,
-                                     const regmap::ElementWords& words,
-                                     const regmap::MapFigures& figures, const std::string& on,
-                                     const regmap::PairingLimits& pairing_limits,
-                                     const regmap::MappedMapOptions& options, const Limits& limits,
-                                     const std::string& name) {
-  const int genus = figures.genus;
-  const regmap::Catalog catalog = regmap::read_catalog(catalog_path());
-  std::vector<regmap::TargetMap> targets;
-  if (!on.empty()) {
-    targets.push_back(regmap::find_target(catalog, on));
-    if (targets[0].surface_genus() != genus)
-      throw InputError("the surface of " + on + " has genus " +
-                       std::to_string(targets[0].surface_genus()) + ", " + name + " genus " +
-                       std::to_string(genus) + "; pick a target of genus " + std::to_string(genus) +
-                       " or leave out --on");
-  } else {
-    targets = regmap::all_targets(catalog, genus);
-  }
-  regmap::TargetGroups groups(limits);
-  regmap::TargetSurfaces surfaces(limits);
-  regmap::RealizationSearch search =
-      regmap::find_realizations(source, words, genus, targets, pairing_limits, groups);
-  std::optional<regmap::DrawnMap> drawn = regmap::draw_first_right(
-      search, source, words, figures, options, surfaces, groups, stderr_progress());
-  if (drawn) return std::move(*drawn);
-  std::string tried;
-  for (const std::string& t : search.tried) tried += (tried.empty() ? "" : ", ") + t;
-  if (search.drawn_wrong > 0)
-    throw InputError(name + ": none of the " + std::to_string(search.drawn_wrong) +
-                     " pairings found with " + tried +
-                     " draws it right (they do not glue into its faces)");
-  throw InputError(
-      name + " has no pairing, by reflections or by rotations, with " +
-      (tried.empty() ? std::string("any target (none of genus ") + std::to_string(genus) + ")"
-                     : tried) +
-      (search.stopped ? " (the search stopped at --max-steps on some; raise it)" : ""));
-}
-
 // --radius, or 0 (automatic) when not given.
 double radius_from(const ParsedArgs& parsed) {
   if (!parsed.has("--radius")) return 0.0;
@@ -569,9 +527,9 @@ int map_on_target(const Args& args) {
   if (!figures.orientable)
     throw InputError(presentation.name + " is not orientable: it has no regular surface to lie on");
   const regmap::ElementWords words(group);
-  const regmap::DrawnMap map =
-      draw_on_best_target(group, words, figures, parsed.value("--on"), pairing_limits, options,
-                          limits, presentation.name);
+  const regmap::DrawnMap map = regmap::draw_on_best_target(
+      group, words, figures, presentation.name, regmap::read_catalog(catalog_path()),
+      parsed.value("--on"), pairing_limits, options, limits, stderr_progress());
   const regmap::Realization& chosen = map.realization;
   const double seconds = seconds_since(start);
   const regmap::MappedMapStats& s = map.drawn.stats;
@@ -589,8 +547,8 @@ int map_on_target(const Args& args) {
       "%s drawn on the surface of %s (%s)\n"
       "  V %zu, E %zu, F %zu found (the map has %zu, %zu, %zu); faces are disks: %s\n"
       "  closed %s, oriented %s, genus %ld, quarter tubes cover the flags once: %s\n",
-      presentation.name.c_str(), chosen.target.name.c_str(), map.surface.stats.base.c_str(),
-      s.vertices, s.edges, s.faces, figures.vertices, figures.edges, figures.faces,
+      presentation.name.c_str(), chosen.target.name.c_str(), map.surface.base.c_str(), s.vertices,
+      s.edges, s.faces, figures.vertices, figures.edges, figures.faces,
       s.faces_are_disks ? "yes" : "no", s.closed ? "yes" : "no", s.oriented ? "yes" : "no", s.genus,
       s.covers_once ? "yes" : "no");
   if (s.self_intersections_searched)

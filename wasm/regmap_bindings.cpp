@@ -206,32 +206,8 @@ regmap::DrawnMap draw_chosen(const Enumerated& e, const regmap::ElementWords& wo
       throw InputError("the realization's target " + r.target.name + " has another genus");
     return regmap::draw_realization(e.group, words, r, drawing, page_limits(), progress);
   }
-  std::vector<regmap::TargetMap> targets;
-  if (!on.empty())
-    targets.push_back(regmap::find_target(*catalog(), on));
-  else
-    targets = regmap::all_targets(*catalog(), e.figures.genus);
-  regmap::TargetGroups groups(page_limits());
-  regmap::TargetSurfaces surfaces(page_limits());
-  regmap::RealizationSearch search =
-      regmap::find_realizations(e.group, words, e.figures.genus, targets, {}, groups);
-  std::optional<regmap::DrawnMap> drawn = regmap::draw_first_right(
-      search, e.group, words, e.figures, drawing, surfaces, groups, progress);
-  if (!drawn) {
-    std::string tried;
-    for (const std::string& t : search.tried) tried += (tried.empty() ? "" : ", ") + t;
-    throw InputError(
-        e.presentation.name +
-        (search.drawn_wrong > 0 ? ": none of the pairings found with " : " has no pairing with ") +
-        (tried.empty() ? "any target of genus " + std::to_string(e.figures.genus) : tried) +
-        (search.drawn_wrong > 0 ? " draws it right" : "") +
-        ": it cannot be drawn on a surface of its genus here");
-  }
-  for (const regmap::Realization& r : search.found)
-    if (r.target.name != drawn->realization.target.name &&
-        std::find(others.begin(), others.end(), r.target.name) == others.end())
-      others.push_back(r.target.name);
-  return std::move(*drawn);
+  return regmap::draw_on_best_target(e.group, words, e.figures, e.presentation.name, *catalog(), on,
+                                     {}, drawing, page_limits(), progress, &others);
 }
 
 // { info, drawn: drawn_map_json, others: [target names], positions, triangles, triangleFace,

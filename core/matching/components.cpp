@@ -1,32 +1,11 @@
 #include "matching/components.h"
 
-#include <numeric>
+#include "base/disjoint_sets.h"
 
 namespace tessera::matching {
 
-namespace {
-
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  std::uint32_t find(std::uint32_t i) {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  void join(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
-
-}  // namespace
-
 std::vector<Component> split_components(const MatchingProblem& problem) {
-  UnionFind sets(problem.node_count());
+  DisjointSets sets(problem.node_count());
   for (const MatchingEdge& e : problem.edges) sets.join(e.u, e.v);
   for (const ConflictPair& c : problem.conflicts)
     sets.join(problem.edges[c.first].u, problem.edges[c.second].u);
@@ -34,7 +13,7 @@ std::vector<Component> split_components(const MatchingProblem& problem) {
   std::vector<std::uint32_t> local_node(problem.node_count());
   std::vector<Component> components;
   for (std::uint32_t v = 0; v < problem.node_count(); ++v) {
-    const std::uint32_t root = sets.find(v);
+    const std::size_t root = sets.find(v);
     if (component_of_root[root] < 0) {
       component_of_root[root] = static_cast<std::int64_t>(components.size());
       components.emplace_back();

@@ -14,9 +14,9 @@ DrawnMap draw_realization(const FiniteGroup& source, const ElementWords& words,
   const FiniteGroup target_group = enumerate_group(target, limits);
   // The same surface as 'tessera regmap surface' builds: searched for crossings, so that one that
   // crosses itself is replaced by a longer relaxation or the spine.
-  DrawnMap out{realization, build_regular_surface(target, target_group, {}, limits, progress), {}};
-  out.drawn = map_onto_surface(source, words, realization.pairing, out.surface, options, progress);
-  return out;
+  const RegularSurface surface = build_regular_surface(target, target_group, {}, limits, progress);
+  return {realization, surface.stats,
+          map_onto_surface(source, words, realization.pairing, surface, options, progress)};
 }
 
 std::optional<DrawnMap> draw_first_right(RealizationSearch& search, const FiniteGroup& source,
@@ -37,7 +37,7 @@ std::optional<DrawnMap> draw_first_right(RealizationSearch& search, const Finite
         if (drawn_right(drawn.stats, figures)) {
           std::rotate(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(k),
                       found.begin() + static_cast<std::ptrdiff_t>(k) + 1);
-          return DrawnMap{found.front(), surface, std::move(drawn)};
+          return DrawnMap{found.front(), surface.stats, std::move(drawn)};
         }
       } catch (const CancelledError&) {
         throw;
@@ -51,6 +51,59 @@ std::optional<DrawnMap> draw_first_right(RealizationSearch& search, const Finite
     }
   }
   return std::nullopt;
+}
+
+namespace {
+
+std::vector<TargetMap> targets_to_try(const Catalog& catalog, const std::string& on, int genus,
+                                      const std::string& name) {
+  if (on.empty()) return all_targets(catalog, genus);
+  TargetMap target = find_target(catalog, on);
+  if (target.surface_genus() != genus)
+    throw InputError("the surface of " + on + " has genus " +
+                     std::to_string(target.surface_genus()) + ", " + name + " genus " +
+                     std::to_string(genus) + "; pick a target of genus " + std::to_string(genus) +
+                     " or leave out --on");
+  return {std::move(target)};
+}
+
+}  // namespace
+
+DrawnMap draw_on_best_target(const FiniteGroup& source, const ElementWords& words,
+                             const MapFigures& figures, const std::string& name,
+                             const Catalog& catalog, const std::string& on,
+                             const PairingLimits& pairing_limits, const MappedMapOptions& options,
+                             const Limits& limits, const Progress& progress,
+                             std::vector<std::string>* others) {
+  const int genus = figures.genus;
+  const std::vector<TargetMap> targets = targets_to_try(catalog, on, genus, name);
+  TargetGroups groups(limits);
+  TargetSurfaces surfaces(limits);
+  RealizationSearch search =
+      find_realizations(source, words, genus, targets, pairing_limits, groups);
+  std::optional<DrawnMap> drawn =
+      draw_first_right(search, source, words, figures, options, surfaces, groups, progress);
+  if (!drawn) {
+    std::string tried;
+    for (const std::string& t : search.tried) tried += (tried.empty() ? "" : ", ") + t;
+    if (search.drawn_wrong > 0)
+      throw InputError(name + ": none of the " + std::to_string(search.drawn_wrong) +
+                       " pairings found with " + tried +
+                       " draws it right (they do not glue into its faces)");
+    throw InputError(
+        name + " has no pairing, by reflections or by rotations, with " +
+        (tried.empty() ? std::string("any target (none of genus ") + std::to_string(genus) + ")"
+                       : tried) +
+        (search.stopped
+             ? " (the search stopped at its step limit on some; raise it with --max-steps)"
+             : ""));
+  }
+  if (others)
+    for (const Realization& r : search.found)
+      if (r.target.name != drawn->realization.target.name &&
+          std::find(others->begin(), others->end(), r.target.name) == others->end())
+        others->push_back(r.target.name);
+  return std::move(*drawn);
 }
 
 nlohmann::ordered_json drawn_map_json(const std::string& source_name, const MapFigures& figures,
@@ -72,8 +125,8 @@ nlohmann::ordered_json drawn_map_json(const std::string& source_name, const MapF
           {"self_intersections", s.self_intersections_searched
                                      ? nlohmann::ordered_json(s.self_intersections)
                                      : nlohmann::ordered_json(nullptr)},
-          {"symmetries_verified", map.surface.stats.symmetries_verified},
-          {"surface_base", map.surface.stats.base},
+          {"symmetries_verified", map.surface.symmetries_verified},
+          {"surface_base", map.surface.base},
           {"subdivisions", s.subdivisions},
           {"mesh_vertices", s.mesh_vertices},
           {"mesh_faces", s.mesh_faces},

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -18,7 +19,7 @@ namespace tessera::regmap {
 
 struct DrawnMap {
   Realization realization;
-  RegularSurface surface;  // the target's
+  SurfaceStats surface;  // the target surface's
   MappedMap drawn;
 };
 
@@ -37,6 +38,17 @@ std::optional<DrawnMap> draw_first_right(RealizationSearch& search, const Finite
                                          const MappedMapOptions& options, TargetSurfaces& surfaces,
                                          TargetGroups& groups,
                                          const Progress& progress = Progress());
+
+// M (named `name`) drawn on the best target that draws it right: the one named `on` (it must have
+// M's genus) or, when `on` is empty, every catalog target of M's genus, searched and drawn by
+// draw_first_right. InputError naming the targets tried when none does. `others`, when given,
+// gets the other targets found to draw it right.
+DrawnMap draw_on_best_target(const FiniteGroup& source, const ElementWords& words,
+                             const MapFigures& figures, const std::string& name,
+                             const Catalog& catalog, const std::string& on,
+                             const PairingLimits& pairing_limits, const MappedMapOptions& options,
+                             const Limits& limits, const Progress& progress,
+                             std::vector<std::string>* others = nullptr);
 
 // source, target, target_kind, genus, V, E, F (found), expected {V, E, F}, face_orbits (of M's
 // faces under the surface's rotations), faces_are_disks,

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <map>
 #include <numbers>
-#include <numeric>
 #include <set>
 #include <utility>
 
 #include <Eigen/LU>
 #include <Eigen/SparseLU>
 
+#include "base/disjoint_sets.h"
 #include "base/error.h"
 #include "mesh/connectivity.h"
 #include "mesh/edge_table.h"
@@ -866,11 +866,6 @@ bool covers_once(const std::vector<TileFrame>& frames, const ElementWords& words
                      [&](double a) { return std::abs(a - flag_area) < 1e-6 * flag_area; });
 }
 
-Index find_root(std::vector<Index>& parent, Index v) {
-  while (parent[v] != v) v = parent[v] = parent[parent[v]];
-  return v;
-}
-
 // The surface's point at a grid location: in the plane of the surface's triangle there.
 Vector3d grid_point(const Mesh& surface, const QuarterTubeGrid& grid, const GridLocation& at) {
   Vector3d point = Vector3d::Zero();
@@ -895,8 +890,7 @@ bool faces_are_disks(const Mesh& mesh, std::size_t labels,
   for (const std::vector<Index>& faces : by_label) {
     // Corners k = 3 i + c of the label's i-th triangle; corners at one vertex that share an
     // edge of the label's triangles are one fan.
-    std::vector<Index> fan(3 * faces.size());
-    std::iota(fan.begin(), fan.end(), Index{0});
+    DisjointSets fan(3 * faces.size());
     std::map<std::pair<Index, Index>, std::vector<Index>>
         corners_on_edge;  // (v, w) -> corners at v
     for (std::size_t i = 0; i < faces.size(); ++i) {
@@ -912,8 +906,7 @@ bool faces_are_disks(const Mesh& mesh, std::size_t labels,
       if (cuts.count({std::min(edge.first, edge.second), std::max(edge.first, edge.second)}) > 0)
         continue;
       for (std::size_t j = 1; j < corners.size(); ++j) {
-        const Index a = find_root(fan, corners[0]), b = find_root(fan, corners[j]);
-        if (a != b) fan[std::max(a, b)] = std::min(a, b);
+        fan.join(corners[0], corners[j]);
       }
     }
     Mesh part;
@@ -921,7 +914,7 @@ bool faces_are_disks(const Mesh& mesh, std::size_t labels,
     for (std::size_t i = 0; i < faces.size(); ++i) {
       std::array<Index, 3> v{};
       for (std::size_t c = 0; c < 3; ++c) {
-        const Index root = find_root(fan, static_cast<Index>(3 * i + c));
+        const Index root = static_cast<Index>(fan.find(3 * i + c));
         const auto [it, added] = index.emplace(root, static_cast<Index>(part.vertex_count()));
         if (added) part.add_vertex(mesh.positions[mesh.face(faces[i])[c]]);
         v[c] = it->second;
@@ -990,8 +983,7 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
   std::vector<Index> offset(tiles + 1, 0);
   for (std::size_t g = 0; g < tiles; ++g)
     offset[g + 1] = offset[g] + static_cast<Index>(shape_of[g]->st.size());
-  std::vector<Index> parent(offset[tiles]);
-  std::iota(parent.begin(), parent.end(), Index{0});
+  DisjointSets same_point(offset[tiles]);
   for (std::size_t g = 0; g < tiles; ++g) {
     const std::array<std::int32_t, 4> across = {sides.seam[g], sides.midpoint[g], sides.seam[g],
                                                 sides.junction[g]};
@@ -1003,9 +995,8 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
         throw Error("the pairing with " + pairing.target + ": quarter tubes " + std::to_string(g) +
                     " and " + std::to_string(h) + " disagree on side L" + std::to_string(i + 1));
       for (std::size_t j = 0; j < mine.side[i].size(); ++j) {
-        const Index u = find_root(parent, offset[g] + static_cast<Index>(mine.side[i][j].second));
-        const Index v = find_root(parent, offset[h] + static_cast<Index>(theirs.side[i][j].second));
-        if (u != v) parent[std::max(u, v)] = std::min(u, v);
+        same_point.join(offset[g] + static_cast<Index>(mine.side[i][j].second),
+                        offset[h] + static_cast<Index>(theirs.side[i][j].second));
       }
     }
   }
@@ -1017,7 +1008,7 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
     const Overlay& overlay = *overlay_of[g];
     const Template& shape = overlay.shape;
     for (std::size_t v = 0; v < shape.st.size(); ++v) {
-      const Index root = find_root(parent, offset[g] + static_cast<Index>(v));
+      const Index root = static_cast<Index>(same_point.find(offset[g] + static_cast<Index>(v)));
       if (vertex[root] == kNoIndex)
         vertex[root] =
             mesh.add_vertex(grid_point(surface.mesh, surface.grids[g], overlay.location[v]));
@@ -1030,8 +1021,7 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
   std::vector<std::int32_t> face_label, tile_label;
   // The faces at one place of one template, over all quarter tubes of that kind, are one orbit of
   // the elements those tubes carry: the first face seen at each place stands for the others.
-  std::vector<Index> orbit_parent(faces.count);
-  std::iota(orbit_parent.begin(), orbit_parent.end(), Index{0});
+  DisjointSets orbit_sets(faces.count);
   std::map<std::pair<bool, Element>, Index> first_at_place;
   std::set<std::pair<Index, Index>> segments;
   for (std::size_t g = 0; g < tiles; ++g) {
@@ -1051,9 +1041,7 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
       const auto [place, first] = first_at_place.emplace(
           std::pair(frames[g].mirrored, shape.triangle_flag[k]), static_cast<Index>(face));
       if (!first) {
-        const Index u = find_root(orbit_parent, place->second);
-        const Index v = find_root(orbit_parent, static_cast<Index>(face));
-        if (u != v) orbit_parent[std::max(u, v)] = std::min(u, v);
+        orbit_sets.join(place->second, static_cast<Index>(face));
       }
     }
     for (const auto& [u, v] : shape.map_edges)
@@ -1062,7 +1050,7 @@ MappedMap map_onto_surface(const FiniteGroup& source, const ElementWords& words,
   std::vector<std::int32_t> orbit_of_root(faces.count, -1), orbit_label;
   std::int32_t orbits = 0;
   for (std::int32_t face : face_label) {
-    std::int32_t& orbit = orbit_of_root[find_root(orbit_parent, static_cast<Index>(face))];
+    std::int32_t& orbit = orbit_of_root[orbit_sets.find(static_cast<std::size_t>(face))];
     if (orbit < 0) orbit = orbits++;
     orbit_label.push_back(orbit);
   }

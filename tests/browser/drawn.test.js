@@ -119,7 +119,7 @@ test('On a surface: the default view of a map; a link names the surface; R2.4, w
   await page.evaluate(() => {
     location.hash = '#mode=regmap&map=R2.4&view=map';
   });
-  await page.getByRole('alert').filter({ hasText: /R2\.4 has no pairing with \{2,3\}/ }).waitFor();
+  await page.getByRole('alert').filter({ hasText: /R2\.4 has no pairing, by reflections or by rotations, with \{2,3\}/ }).waitFor();
   await idle(page);
   assert.ok(await page.locator('[data-role=drawn-result]').isHidden());
   await page.getByLabel('2D tiling').check();
