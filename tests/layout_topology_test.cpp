@@ -70,6 +70,19 @@ TEST(LayoutTopology, HemisphereWithBoundaryIsValid) {
   expect_valid(run);
 }
 
+// Caps cut from an icosphere by planes through its triangles: staircase boundaries whose edges
+// stand up to 60 degrees off the cut. The field and the boundary's parameter line follow the cut,
+// not the steps (mesh/boundary_tangents.h): a handful of singularities (174 on such a cap when the
+// steps were read edge by edge) and a valid layout.
+TEST(LayoutTopology, CapsCutThroughTrianglesAreValid) {
+  for (double cut : {0.13, 0.31, -0.27}) {
+    SCOPED_TRACE("cut at x = " + std::to_string(cut));
+    const LayoutRun run = run_layout(faces_beyond(icosphere(4), cut));
+    EXPECT_LE(run.input.param.singularities.size(), 10u);
+    expect_valid(run);
+  }
+}
+
 TEST(LayoutTopology, SameInputSameLayout) {
   const LayoutRun a = run_layout(thin_torus());
   const LayoutRun b = run_layout(thin_torus());

@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 
+#include "mesh/boundary_tangents.h"
 #include "mesh/geometry.h"
 
 namespace tessera {
@@ -110,6 +111,7 @@ FaceConstraints feature_constraints(const Mesh& mesh, const Connectivity& c,
                                     double sharp_radians) {
   const std::vector<double> dihedral = dihedral_angles(mesh, c);
   const std::vector<std::uint8_t> sharp = feature_edges(c, dihedral, sharp_radians);
+  const BoundaryTangents boundary = boundary_tangents(mesh, c);
   FaceConstraints constraints;
   constraints.fixed.assign(mesh.face_count(), 0);
   constraints.angle.assign(mesh.face_count(), 0.0);
@@ -123,9 +125,8 @@ FaceConstraints feature_constraints(const Mesh& mesh, const Connectivity& c,
     if (constraints.fixed[f] && r <= rank[f]) continue;
     constraints.fixed[f] = 1;
     rank[f] = r;
-    constraints.angle[f] =
-        frames.angle(f, c.is_boundary_edge(e) ? halfedge_vector(mesh, c, h)
-                                              : feature_tangent(mesh, c, sharp, h));
+    constraints.angle[f] = frames.angle(
+        f, c.is_boundary_edge(e) ? boundary.edge_tangent[e] : feature_tangent(mesh, c, sharp, h));
   }
   free_conflicting_constraints(c, kappa, rank, constraints);
   for (std::uint8_t fixed : constraints.fixed) constraints.count += fixed;

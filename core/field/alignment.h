@@ -1,6 +1,7 @@
 // What a designed cross field aligns to (Sec. 6.3 input field; SPEC "Cross field"):
 //  - hard constraints: every face on a boundary edge or a sharp edge (dihedral angle above a
-//    threshold) has its cross along that edge; a face with several such edges takes the boundary
+//    threshold) has its cross along that edge's curve (the boundary's, mesh/boundary_tangents.h,
+//    or the feature line's); a face with several such edges takes the boundary
 //    edge, else the sharpest one; two adjacent faces whose sharp-edge constraints disagree by more
 //    than 30 degrees (modulo a quarter turn) are both left free, as noise of a scan;
 //  - a soft target: the principal curvature directions, in the power representation z^4 (so both

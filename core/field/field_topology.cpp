@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "mesh/boundary_tangents.h"
+
 namespace tessera {
 namespace {
 
@@ -20,13 +22,23 @@ double corner_angle(const Mesh& mesh, const Connectivity& c, Index h) {
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
-// The quarter turn (in [-pi/4, pi/4]) that aligns the field of the face of corner halfedge h with
-// h's direction. Boundary edges use it where interior edges use the turn delta: the boundary
-// index reads the field relative to the boundary (cross_field.h).
+// The turn that aligns the field of the face of corner halfedge h with h's direction, read
+// through the boundary curve's tangent there (mesh/boundary_tangents.h): the field's quarter
+// turn closest to the tangent (in [-pi/4, pi/4]), plus the tangent's angle to the edge. Boundary
+// edges use it where interior edges use the turn delta: the boundary index reads the field
+// relative to the boundary (cross_field.h). On a staircase boundary the edges stand up to 60
+// degrees off the field, which reduced on its own would put a quarter of index on the wrong vertex.
 double boundary_alignment(const Mesh& mesh, const Connectivity& c, const FaceFrames& frames,
-                          const std::vector<double>& angle, Index h) {
+                          const BoundaryTangents& boundary, const std::vector<double>& angle,
+                          Index h) {
   const Index f = c.face[h];
-  return reduce_quarter(angle[f] - frames.angle(f, halfedge_vector(mesh, c, h)));
+  const Eigen::Vector3d edge = halfedge_vector(mesh, c, h);
+  // The boundary curve's tangent runs along the boundary halfedge, h's twin: reversed, along h.
+  const Eigen::Vector3d tangent = -boundary.edge_tangent[c.edge[h]];
+  const double edge_angle = frames.angle(f, edge);
+  const double tangent_angle = frames.angle(f, tangent);
+  return reduce_quarter(angle[f] - tangent_angle) +
+         std::remainder(tangent_angle - edge_angle, 2 * std::numbers::pi);
 }
 
 }  // namespace
@@ -55,6 +67,7 @@ Matching principal_matching(const Connectivity& c, const std::vector<double>& an
 std::vector<int> vertex_indices(const Mesh& mesh, const Connectivity& c, const FaceFrames& frames,
                                 const std::vector<double>& angle, const std::vector<double>& turn) {
   std::vector<int> index(c.vertex_count(), 0);
+  const BoundaryTangents boundary = boundary_tangents(mesh, c);
   for (Index v = 0; v < c.vertex_count(); ++v) {
     const std::vector<Index> out = outgoing_halfedges(c, v);
     if (out.empty()) continue;
@@ -67,9 +80,9 @@ std::vector<int> vertex_indices(const Mesh& mesh, const Connectivity& c, const F
       curvature -= corner_angle(mesh, c, h);
       const Index across = c.prev[h];
       if (c.is_boundary_halfedge(c.twin[h]))
-        turning += boundary_alignment(mesh, c, frames, angle, h);
+        turning += boundary_alignment(mesh, c, frames, boundary, angle, h);
       if (c.is_boundary_halfedge(c.twin[across]))
-        turning -= boundary_alignment(mesh, c, frames, angle, across);
+        turning -= boundary_alignment(mesh, c, frames, boundary, angle, across);
       else
         turning += turn[across];
     }

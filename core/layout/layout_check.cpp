@@ -1,12 +1,9 @@
 #include "layout/layout_check.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
-
-#include <Eigen/Geometry>
 
 #include "base/error.h"
+#include "mesh/boundary_tangents.h"
 #include "mesh/connectivity.h"
 
 namespace tessera::layout {
@@ -75,18 +72,6 @@ class Checker {
     return true;
   }
 
-  // The surface angle at a vertex: the sum of its corner angles in 3D.
-  double surface_angle(Index v, const std::vector<Index>& outgoing) const {
-    double total = 0;
-    for (Index h : outgoing) {
-      if (c_.is_boundary_halfedge(h)) continue;
-      const Eigen::Vector3d a = mesh_.positions[c_.to_vertex[h]] - mesh_.positions[v];
-      const Eigen::Vector3d b = mesh_.positions[c_.from_vertex(c_.prev[h])] - mesh_.positions[v];
-      total += std::atan2(a.cross(b).norm(), a.dot(b));
-    }
-    return total;
-  }
-
   // Per vertex: whether the sides around it differ (two patches, or a patch and the mesh
   // boundary). Only those can be nodes or touch a patch twice; the others need no walk around.
   std::vector<bool> vertices_between_sides() const {
@@ -104,6 +89,7 @@ class Checker {
   void find_nodes() {
     is_node_.assign(mesh_.vertex_count(), false);
     const std::vector<bool> between = vertices_between_sides();
+    const std::vector<std::uint8_t> boundary_corner = boundary_tangents(mesh_, c_).corner;
     std::vector<Index> outgoing;
     std::vector<std::int32_t> run_sides;  // the side of each run of faces around v
     for (Index v = 0; v < mesh_.vertex_count(); ++v) {
@@ -124,8 +110,7 @@ class Checker {
           problem("patch " + std::to_string(run_sides[k]) + " touches itself at vertex " +
                   std::to_string(v));
       bool node = runs >= 3;
-      if (runs == 2 && c_.is_boundary_vertex(v))
-        node = std::abs(surface_angle(v, outgoing) - std::numbers::pi) > std::numbers::pi / 4;
+      if (runs == 2 && c_.is_boundary_vertex(v)) node = boundary_corner[v] != 0;
       is_node_[v] = node;
       if (node) result_.nodes.push_back(v);
     }

@@ -2,8 +2,9 @@
 // id of each face alone, and the patch graph it finds on the way.
 //
 // A node is a vertex where at least three sides meet (the fans of faces of one patch around it,
-// the surface's boundary counting as a side), or a boundary vertex where the boundary turns (its
-// surface angle is more than 45 degrees away from a straight one). The layout is valid iff
+// the surface's boundary counting as a side), or a corner of the boundary curve: where it turns by
+// more than 45 degrees, read over a few edges on either side (mesh/boundary_tangents.h), so that
+// the steps of a boundary cut through triangles are no corners. The layout is valid iff
 //  - the patches cover the surface: every face has a patch id in [0, patch count), every id is
 //  used;
 //  - every patch is a topological disk: one edge-connected piece, Euler characteristic 1, one

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "mesh/boundary_tangents.h"
 #include "mesh/geometry.h"
 #include "mesh/topology.h"
 #include "param/linear_elimination.h"
@@ -32,17 +33,19 @@ void add_transition(LinearElimination& elimination, Index from, Index to, int r,
 }
 
 // Sec. 4.4 takes the boundary for a parameter line: along each boundary edge whose face's cross is
-// aligned to it (alignment.h makes it so), the coordinate across the edge stays constant,
-// v(b) = v(a) for an edge along u_T and u(b) = u(a) for one along v_T. An edge more than
-// kBoundaryTolerance off both axes (the second boundary edge of a corner face) is left free.
+// aligned to the boundary curve there (alignment.h makes it so), the coordinate across the curve
+// stays constant, v(b) = v(a) for a curve along u_T and u(b) = u(a) for one along v_T. The curve's
+// tangent, not the edge's direction, decides (mesh/boundary_tangents.h): a staircase boundary is
+// straightened into one parameter line. An edge whose curve is more than kBoundaryTolerance off
+// both axes is left free.
 void add_boundary_isolines(LinearElimination& elimination, const Mesh& mesh, const Connectivity& c,
                            const CrossField& combed, const Wedges& wedges) {
   const double kBoundaryTolerance = std::sin(std::numbers::pi / 6);
+  const BoundaryTangents boundary = boundary_tangents(mesh, c);
   for (Index h = 0; h < c.corner_count; ++h) {
     if (!c.is_boundary_edge(c.edge[h])) continue;
     const Index f = c.face[h];
-    const Eigen::Vector3d edge =
-        (mesh.positions[c.to_vertex[h]] - mesh.positions[c.from_vertex(h)]).normalized();
+    const Eigen::Vector3d& edge = boundary.edge_tangent[c.edge[h]];
     const Eigen::Vector3d u = combed.direction[f];
     const Eigen::Vector3d v = face_normal(mesh, f).cross(u);
     const double along_u = std::abs(edge.dot(u)), along_v = std::abs(edge.dot(v));
