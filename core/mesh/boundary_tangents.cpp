@@ -13,13 +13,15 @@ constexpr double kChordEdges = 4;
 constexpr double kCornerDegrees = 55;
 constexpr double kVertexDegrees = 45;
 
-// The median edge length: refining the mesh along a layout's arcs barely moves it, so that chords
-// of a multiple of it span the same stretch of boundary before and after.
-double median_edge_length(const Mesh& mesh, const Connectivity& c) {
-  std::vector<double> length(c.edge_count());
+// The median length of the boundary edges: the layout's refinement splits only the few where arcs
+// end on the boundary, so that chords of a multiple of it span the same stretch of boundary on the
+// refined mesh as on the input.
+double median_boundary_edge_length(const Mesh& mesh, const Connectivity& c) {
+  std::vector<double> length;
   for (Index e = 0; e < c.edge_count(); ++e) {
+    if (!c.is_boundary_edge(e)) continue;
     const Index h = c.edge_halfedge[e];
-    length[e] = (mesh.positions[c.to_vertex[h]] - mesh.positions[c.from_vertex(h)]).norm();
+    length.push_back((mesh.positions[c.to_vertex[h]] - mesh.positions[c.from_vertex(h)]).norm());
   }
   if (length.empty()) return 0;
   std::nth_element(length.begin(), length.begin() + length.size() / 2, length.end());
@@ -64,20 +66,8 @@ struct Loop {
   }
 };
 
-// The turn of the boundary at each vertex between the chords before and after it.
-std::vector<double> chord_turns(const Loop& loop) {
-  const std::vector<std::uint8_t> none(loop.size(), 0);
-  std::vector<double> turn(loop.size(), 0.0);
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Eigen::Vector3d back = loop.p[i] - loop.chord_end(i, -1, none);
-    const Eigen::Vector3d ahead = loop.chord_end(i, +1, none) - loop.p[i];
-    turn[i] = std::atan2(back.cross(ahead).norm(), back.dot(ahead));
-  }
-  return turn;
-}
-
-// How far the boundary turns at vertex v itself: pi minus its surface angle (the sum of its
-// corner angles), unsigned.
+// How far the boundary turns at vertex v on the surface (its geodesic turn): pi minus its surface
+// angle (the sum of its corner angles), positive where the surface is convex.
 double vertex_turn(const Mesh& mesh, const Connectivity& c, Index v) {
   double angle = 0;
   for (Index h : outgoing_halfedges(c, v)) {
@@ -86,30 +76,49 @@ double vertex_turn(const Mesh& mesh, const Connectivity& c, Index v) {
     const Eigen::Vector3d b = mesh.positions[c.from_vertex(c.prev[h])] - mesh.positions[v];
     angle += std::atan2(a.cross(b).norm(), a.dot(b));
   }
-  return std::abs(std::numbers::pi - angle);
+  return std::numbers::pi - angle;
 }
 
-// Corners: vertices where the chords turn by more than kCornerDegrees and the boundary turns by
-// more than kVertexDegrees at the vertex itself (a circle of few edges turns as far between its
-// chords, but a little at each vertex), the largest chord turn among such vertices within a
-// chord's reach (ties: the first).
-std::vector<std::uint8_t> loop_corners(const Loop& loop, const std::vector<double>& vertex_turn) {
+// The turns within a chord's reach of each vertex, weighted by 1 - distance / reach: the steps of a
+// staircase turn by alternately +60 and -60 degrees or so and cancel, a corner keeps its turn, a
+// curve adds what it turns within the reach.
+std::vector<double> smoothed_turns(const Loop& loop, const std::vector<double>& turn) {
   const std::size_t n = loop.size();
-  const std::vector<double> turn = chord_turns(loop);
+  std::vector<double> smoothed(turn);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const int dir : {-1, +1}) {
+      double walked = 0;
+      for (std::size_t k = 0, j = i; k < loop.steps; ++k) {
+        walked += loop.length_to(j, dir);
+        j = loop.step(j, dir);
+        if (walked >= loop.reach) break;
+        smoothed[i] += (1 - walked / loop.reach) * turn[j];
+      }
+    }
+  }
+  return smoothed;
+}
+
+// Corners: vertices that turn by more than kVertexDegrees themselves and by more than
+// kCornerDegrees smoothed (smoothed_turns()), the largest smoothed turn among such vertices within
+// a chord's reach (ties: the first).
+std::vector<std::uint8_t> loop_corners(const Loop& loop, const std::vector<double>& turn) {
+  const std::size_t n = loop.size();
+  const std::vector<double> smoothed = smoothed_turns(loop, turn);
   std::vector<std::uint8_t> candidate(n, 0), corner(n, 0);
   for (std::size_t i = 0; i < n; ++i)
-    candidate[i] = turn[i] > kCornerDegrees * std::numbers::pi / 180 &&
-                   vertex_turn[i] > kVertexDegrees * std::numbers::pi / 180;
+    candidate[i] = std::abs(smoothed[i]) > kCornerDegrees * std::numbers::pi / 180 &&
+                   std::abs(turn[i]) > kVertexDegrees * std::numbers::pi / 180;
   for (std::size_t i = 0; i < n; ++i) {
     if (!candidate[i]) continue;
     bool peak = true;
     for (std::size_t k = 1, j = i, m = loop.vertices_within(i, -1); k <= m && peak; ++k) {
       j = loop.step(j, -1);
-      peak = !candidate[j] || turn[i] > turn[j];
+      peak = !candidate[j] || std::abs(smoothed[i]) > std::abs(smoothed[j]);
     }
     for (std::size_t k = 1, j = i, m = loop.vertices_within(i, +1); k <= m && peak; ++k) {
       j = loop.step(j, +1);
-      peak = !candidate[j] || turn[i] >= turn[j];
+      peak = !candidate[j] || std::abs(smoothed[i]) >= std::abs(smoothed[j]);
     }
     corner[i] = peak;
   }
@@ -122,7 +131,7 @@ BoundaryTangents boundary_tangents(const Mesh& mesh, const Connectivity& c) {
   BoundaryTangents out;
   out.edge_tangent.assign(c.edge_count(), Eigen::Vector3d::Zero());
   out.corner.assign(c.vertex_count(), 0);
-  const double reach = kChordEdges * median_edge_length(mesh, c);
+  const double reach = kChordEdges * median_boundary_edge_length(mesh, c);
   for (const std::vector<Index>& halfedges : boundary_loops(c)) {
     const std::size_t n = halfedges.size();
     // Loop vertex i is where boundary halfedge i starts.

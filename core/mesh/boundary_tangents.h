@@ -4,15 +4,16 @@
 // A boundary cut through a triangulation (a scan's hole, a plane section) zigzags: a staircase of
 // edges up to 60 degrees off the curve. Read per edge, the constraints of neighbouring faces
 // disagree and force singularities all along it (a cut icosphere: 174 instead of 6). The tangent
-// of a boundary edge is instead the chord from 4 median edge lengths before it to 4 after it
-// along the boundary (points on the polyline, so that a vertex added on an edge moves nothing),
+// of a boundary edge is instead the chord from 4 median boundary edge lengths before it to 4 after
+// it along the boundary (points on the polyline, so that a vertex added on an edge moves nothing),
 // not past a corner of the boundary curve. A corner is a vertex where
-//  - the chords over those lengths before and after it turn by more than 55 degrees: the field's
-//    boundary index rounds that turn to a quarter (from 45 degrees on), and a staircase's chords
-//    turn by less;
-//  - the boundary turns by more than 45 degrees at the vertex itself: a circle of few edges turns
-//    as far between its chords, but a little at each vertex;
-//  - the chords turn more than at any other such vertex within their reach.
+//  - the boundary turns on the surface (pi minus the vertex's surface angle) by more than 45
+//    degrees, and
+//  - by more than 55 degrees summed over the vertices within the chords' reach, each weighted by
+//    1 - distance / reach: a staircase's alternate steps cancel, a corner keeps its turn, a curve
+//    turns by less within the reach (the field's boundary index rounds a turn to a quarter from
+//    45 degrees on: 55 keeps a margin);
+//  - that sum is the largest of such vertices within the reach.
 // On a straight or evenly curved boundary the chord is the edge's own direction.
 //
 // In:  a mesh and its connectivity. Out: per edge, a unit tangent (zero on interior edges), and
