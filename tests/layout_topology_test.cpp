@@ -83,6 +83,24 @@ TEST(LayoutTopology, CapsCutThroughTrianglesAreValid) {
   }
 }
 
+// The cut that left 3-cornered patches on the double torus (x > 0.3), and planes through the
+// triangles of a torus and of the mechanical part (its sharp edges meeting the cut's staircase).
+TEST(LayoutTopology, HandlebodiesCutThroughTrianglesAreValid) {
+  struct Cut {
+    const char* name;
+    Mesh mesh;
+  };
+  const std::vector<Cut> cuts = {
+      {"double torus, x > 0.3", faces_beyond(double_torus(), 0.3)},
+      {"double torus, x > -0.2", faces_beyond(double_torus(), -0.2)},
+      {"torus, x > 0.37", faces_beyond(torus(1, 0.35, 96, 40), 0.37)},
+      {"mechanical part, x > 0.3", faces_beyond(mechanical_part(), 0.3)}};
+  for (const Cut& cut : cuts) {
+    SCOPED_TRACE(cut.name);
+    expect_valid(run_layout(cut.mesh));
+  }
+}
+
 TEST(LayoutTopology, SameInputSameLayout) {
   const LayoutRun a = run_layout(thin_torus());
   const LayoutRun b = run_layout(thin_torus());
