@@ -101,6 +101,22 @@ TEST(LayoutTopology, HandlebodiesCutThroughTrianglesAreValid) {
   }
 }
 
+// Annuli whose field has no singularity (it runs along both boundary loops): two regular boundary
+// vertices stand in as nodes (ports.cpp, stand_in_nodes()), and their separatrices cut the annulus
+// into two patches. Without them the layout was the annulus itself, no disk.
+TEST(LayoutTopology, SingularityFreeAnnuliGetTwoPatches) {
+  Mesh ring = torus(1, 0.35, 96, 40);  // the torus's upper part, z > 0.1, cut through triangles
+  for (Eigen::Vector3d& p : ring.positions) std::swap(p.x(), p.z());
+  const std::vector<Mesh> annuli = {open_cylinder(1, 2, 32, 8), faces_beyond(ring, 0.1)};
+  for (const Mesh& annulus : annuli) {
+    const LayoutRun run = run_layout(annulus);
+    EXPECT_TRUE(run.input.param.singularities.empty());
+    expect_valid(run);
+    EXPECT_EQ(run.layout.check.patch_count, 2u);
+    EXPECT_EQ(layout::layout_json(run.graph, run.layout)["stand_in_nodes"], 2);
+  }
+}
+
 TEST(LayoutTopology, SameInputSameLayout) {
   const LayoutRun a = run_layout(thin_torus());
   const LayoutRun b = run_layout(thin_torus());

@@ -1,5 +1,6 @@
 #include "layout/layout_json.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tessera::layout {
@@ -27,7 +28,11 @@ std::vector<Index> folded_singularities(const Ports& ports) {
 nlohmann::ordered_json layout_json(const LayoutGraph& graph, const QuadLayout& layout) {
   const PortGraph& g = graph.graph;
   nlohmann::ordered_json json;
-  json["singularities"] = g.ports.points.size();
+  const std::size_t stand_ins =
+      std::count_if(g.ports.points.begin(), g.ports.points.end(),
+                    [](const SingularPoint& point) { return point.stand_in(); });
+  json["singularities"] = g.ports.points.size() - stand_ins;
+  json["stand_in_nodes"] = stand_ins;
   json["graph_edges"] = g.edges.size();
   json["conflicts"] = g.conflicts.size();
   json["patches"] = layout.check.patch_count;

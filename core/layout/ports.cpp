@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
 #include "layout/trace.h"
+#include "mesh/topology.h"
 #include "param/poisson.h"
 
 namespace tessera::layout {
@@ -186,16 +188,59 @@ Index Ports::nearest_port(Index point_index, double angle) const {
   return nearest;
 }
 
+namespace {
+
+// The vertex half way along a boundary loop (by length) from its first vertex.
+Index halfway_round(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& loop) {
+  const auto length = [&](Index h) {
+    return (mesh.positions[c.to_vertex[h]] - mesh.positions[c.from_vertex(h)]).norm();
+  };
+  double total = 0;
+  for (Index h : loop) total += length(h);
+  double walked = 0;
+  for (Index h : loop)
+    if ((walked += length(h)) >= total / 2) return c.to_vertex[h];
+  return c.to_vertex[loop.back()];
+}
+
+// Stand-in nodes: a component with boundary but no singularity (an annulus whose field runs along
+// both boundaries, index sum 0) gives no separatrix to grow, and its layout would be the annulus
+// itself. Two regular vertices half way round its first boundary loop from each other stand in as
+// nodes of valence 2: each has the one port of a regular boundary vertex, into the surface, and
+// their two separatrices cut the annulus into two patches.
+std::vector<Singularity> stand_in_nodes(const Charts& charts) {
+  const Connectivity& c = charts.connectivity;
+  const Components components = connected_components(charts.mesh, c);
+  std::vector<std::uint8_t> has_singularity(components.count, 0);
+  for (const Singularity& s : charts.param.singularities)
+    has_singularity[components.vertex_component[s.vertex]] = 1;
+  std::vector<Singularity> stand_ins;
+  for (const std::vector<Index>& loop : boundary_loops(c)) {
+    const Index first = c.from_vertex(loop.front());
+    const Index component = components.vertex_component[first];
+    if (has_singularity[component] || loop.size() < 4) continue;
+    has_singularity[component] = 1;  // one loop's pair per component
+    stand_ins.push_back({first, 0.0, 2});
+    stand_ins.push_back({halfway_round(charts.mesh, c, loop), 0.0, 2});
+  }
+  return stand_ins;
+}
+
+void add_point(const Charts& charts, const Singularity& s, Ports& result) {
+  const Index index = static_cast<Index>(result.points.size());
+  result.point_of_vertex[s.vertex] = index;
+  result.points.push_back({vertex_ring(charts, s.vertex, s.valence * kQuarter), s.valence, {}});
+  for (std::size_t k = 0; k < result.points[index].ring.corners.size(); ++k)
+    add_corner_ports(charts, index, k, result);
+}
+
+}  // namespace
+
 Ports find_ports(const Charts& charts) {
   Ports result;
   result.point_of_vertex.assign(charts.mesh.vertex_count(), kNoIndex);
-  for (const Singularity& s : charts.param.singularities) {
-    const Index index = static_cast<Index>(result.points.size());
-    result.point_of_vertex[s.vertex] = index;
-    result.points.push_back({vertex_ring(charts, s.vertex, s.valence * kQuarter), s.valence, {}});
-    for (std::size_t k = 0; k < result.points[index].ring.corners.size(); ++k)
-      add_corner_ports(charts, index, k, result);
-  }
+  for (const Singularity& s : charts.param.singularities) add_point(charts, s, result);
+  for (const Singularity& s : stand_in_nodes(charts)) add_point(charts, s, result);
   return result;
 }
 

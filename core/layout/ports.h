@@ -68,10 +68,14 @@ struct SingularPoint {
   std::vector<Index> ports;  // global port ids, counterclockwise (only those into the surface)
   // On the boundary the ports do not close up: the neighbour of the last one is not the first.
   bool cyclic() const { return !ring.boundary; }
+  // A stand-in node (ports.cpp, stand_in_nodes()): a regular boundary vertex, no singularity.
+  bool stand_in() const { return ring.boundary && valence == 2; }
 };
 
 struct Ports {
-  std::vector<SingularPoint> points;  // one per singularity of the parameterization, same order
+  // One per singularity of the parameterization, same order, then the stand-in nodes of valence 2
+  // of components with boundary but no singularity (ports.cpp, stand_in_nodes()).
+  std::vector<SingularPoint> points;
   std::vector<Port> ports;
   std::vector<Index> point_of_vertex;  // per mesh vertex, its singular point or kNoIndex
 
