@@ -139,6 +139,24 @@ TEST(Remesh, QuadCountFollowsTheTarget) {
   expect_good_quad_mesh(sphere(), b);
 }
 
+// The page's slider: one prep of the layout, then any number of targets, each the very mesh a
+// fresh remesh_layout() makes.
+TEST(Remesh, OnePrepServesEveryTargetAsAFreshRemesh) {
+  const remesh::RemeshPrep prep = remesh::prepare_remesh(sphere().layout);
+  EXPECT_EQ(prep.charts.size(), sphere().layout.check.patch_count);
+  EXPECT_EQ(prep.tracks.size(), prep.sides.sides.size());
+  for (std::size_t quads : {150, 900, 3000}) {
+    remesh::SizeTarget target;
+    target.quads = quads;
+    const remesh::QuadMesh kept = remesh::remesh_prepared(sphere().layout, prep, target);
+    const remesh::QuadMesh fresh = remesh::remesh_layout(sphere().layout, target);
+    EXPECT_EQ(kept.mesh.positions, fresh.mesh.positions) << quads;
+    EXPECT_EQ(kept.mesh.face_vertices, fresh.mesh.face_vertices) << quads;
+    EXPECT_EQ(kept.mesh.face_attributes.at("patch"), fresh.mesh.face_attributes.at("patch"));
+    EXPECT_EQ(kept.lengths.segments, fresh.lengths.segments);
+  }
+}
+
 TEST(Remesh, EdgeLengthSetsTheScale) {
   remesh::SizeTarget coarse, fine;
   coarse.edge_length = 0.3;
@@ -225,6 +243,16 @@ TEST(Remesh, HausdorffDistanceOfSpheres) {
   const double d = remesh::relative_hausdorff(unit, larger);
   EXPECT_GE(d, 0.1 / (2 * std::sqrt(3.0)) - 1e-9);
   EXPECT_LT(d, 0.15 / (2 * std::sqrt(3.0)));
+}
+
+TEST(Remesh, HausdorffReferenceGivesTheDistanceForEveryMesh) {
+  const Mesh unit = icosphere(2);
+  const remesh::HausdorffReference reference(unit);
+  for (double scale : {1.0, 1.1, 0.8}) {
+    Mesh other = icosphere(scale == 1.0 ? 2 : 1);
+    for (Eigen::Vector3d& x : other.positions) x *= scale;
+    EXPECT_EQ(reference.relative_to(other), remesh::relative_hausdorff(unit, other)) << scale;
+  }
 }
 
 TEST(Remesh, InvalidLayoutIsAnInputErrorNamingTheProblem) {

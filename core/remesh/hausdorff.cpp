@@ -7,7 +7,6 @@
 
 #include <Eigen/Geometry>
 
-#include "mesh/triangle_grid.h"
 #include "remesh/smoothing.h"
 
 namespace tessera::remesh {
@@ -47,21 +46,28 @@ double distance_to(const TriangleGrid& grid, const Mesh& mesh, const Vector3d& p
   }
 }
 
-double one_sided(const Mesh& from, const Mesh& to, double start) {
-  const TriangleGrid grid(to);
+double one_sided(const std::vector<Vector3d>& from, const TriangleGrid& grid, const Mesh& to,
+                 double start) {
   double largest = 0;
-  for (const Vector3d& p : samples(from))
-    largest = std::max(largest, distance_to(grid, to, p, start));
+  for (const Vector3d& p : from) largest = std::max(largest, distance_to(grid, to, p, start));
   return largest;
 }
 
 }  // namespace
 
-double relative_hausdorff(const Mesh& a, const Mesh& b) {
-  const double d = diagonal(a);
+HausdorffReference::HausdorffReference(const Mesh& a)
+    : a_(&a), grid_(a), samples_(samples(a)), diagonal_(diagonal(a)) {}
+
+double HausdorffReference::relative_to(const Mesh& b) const {
+  const double d = diagonal_;
   if (!(d > 0) || b.face_count() == 0) return std::numeric_limits<double>::infinity();
   const double start = 1e-3 * d;
-  return std::max(one_sided(a, b, start), one_sided(b, a, start)) / d;
+  const double from_a = one_sided(samples_, TriangleGrid(b), b, start);
+  return std::max(from_a, one_sided(samples(b), grid_, *a_, start)) / d;
+}
+
+double relative_hausdorff(const Mesh& a, const Mesh& b) {
+  return HausdorffReference(a).relative_to(b);
 }
 
 }  // namespace tessera::remesh
