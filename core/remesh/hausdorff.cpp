@@ -30,9 +30,13 @@ double diagonal(const Mesh& mesh) {
   return box.diagonal().norm();
 }
 
-// The distance from p to the nearest triangle of the grid: the cube of half-width r holds every
-// point within r, so a nearest point found at distance <= r is the nearest; else r grows to it.
-double distance_to(const TriangleGrid& grid, const Mesh& mesh, const Vector3d& p, double r) {
+// The distance from p to the nearest triangle of the grid, when it is above `floor` (else some
+// distance <= floor, which cannot raise a largest distance of `floor`): the cube of half-width r
+// holds every point within r, so a nearest point found at distance <= r is the nearest; else r
+// grows to it. Most samples lie closer to the other mesh than the largest distance found so far:
+// they are settled by the first cube, and only the few far ones grow it.
+double distance_above(const TriangleGrid& grid, const Mesh& mesh, const Vector3d& p, double r,
+                      double floor) {
   for (;;) {
     double best = std::numeric_limits<double>::infinity();
     grid.for_each_triangle_near(p, r, [&](std::uint32_t t) {
@@ -41,15 +45,17 @@ double distance_to(const TriangleGrid& grid, const Mesh& mesh, const Vector3d& p
           nearest_on_triangle(p, mesh.positions[c[0]], mesh.positions[c[1]], mesh.positions[c[2]]);
       best = std::min(best, (q - p).norm());
     });
-    if (best <= r) return best;
+    if (best <= r || best <= floor) return best;
     r = std::isfinite(best) ? best : 2 * r;
   }
 }
 
+// The largest distance from the points `from` to the mesh `to`, or `floor` if that is larger.
 double one_sided(const std::vector<Vector3d>& from, const TriangleGrid& grid, const Mesh& to,
-                 double start) {
-  double largest = 0;
-  for (const Vector3d& p : from) largest = std::max(largest, distance_to(grid, to, p, start));
+                 double start, double floor = 0) {
+  double largest = floor;
+  for (const Vector3d& p : from)
+    largest = std::max(largest, distance_above(grid, to, p, start, largest));
   return largest;
 }
 
@@ -63,7 +69,8 @@ double HausdorffReference::relative_to(const Mesh& b) const {
   if (!(d > 0) || b.face_count() == 0) return std::numeric_limits<double>::infinity();
   const double start = 1e-3 * d;
   const double from_a = one_sided(samples_, TriangleGrid(b), b, start);
-  return std::max(from_a, one_sided(samples(b), grid_, *a_, start)) / d;
+  // The other direction matters only where it exceeds this one: from_a is its floor.
+  return one_sided(samples(b), grid_, *a_, start, from_a) / d;
 }
 
 double relative_hausdorff(const Mesh& a, const Mesh& b) {
