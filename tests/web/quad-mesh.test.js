@@ -89,6 +89,10 @@ describe('quadMeshVerdict', () => {
   it('says conforming without flips, or what is wrong', () => {
     expect(quadMeshVerdict(SPHERE)).toBe('384 quads, 8 irregular vertices: conforming, no flips');
     expect(quadMeshVerdict({ ...SPHERE, flipped_quads: 2, manifold: false })).toBe('384 quads, 8 irregular vertices: not a manifold, 2 flipped quads');
+    expect(quadMeshVerdict({ ...SPHERE, quads: 2228, nonpositive_jacobian_quads: 9 })).toBe(
+      '2,228 quads, 8 irregular vertices: conforming, no flips, 9 quads with a scaled Jacobian ≤ 0',
+    );
+    expect(quadMeshVerdict({ ...SPHERE, euler_characteristic: 0 })).toBe('384 quads, 8 irregular vertices: another Euler characteristic than the input, no flips');
   });
 });
 

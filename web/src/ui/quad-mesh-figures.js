@@ -78,12 +78,18 @@ export function quadMeshFigures({ info, target, remeshSeconds }) {
   return { figures, values };
 }
 
-/** The panel's one-line verdict on a quad mesh. */
+/**
+ * The panel's one-line verdict on a quad mesh: conforming (a manifold of the input's Euler
+ * characteristic) or what is wrong, its flips, and its quads with a scaled Jacobian <= 0 (reflex
+ * or folded corners, most at the layout's own corners: `nonpositive_corners_at_nodes`).
+ */
 export function quadMeshVerdict(info) {
-  const problems = [];
-  if (!info.manifold) problems.push('not a manifold');
-  if (info.flipped_quads > 0) problems.push(`${count(info.flipped_quads)} flipped quads`);
-  if (info.euler_characteristic !== info.input_euler_characteristic) problems.push('another Euler characteristic than the input');
-  const head = `${count(info.quads)} quads, ${count(info.irregular_vertices)} irregular vertices`;
-  return problems.length === 0 ? `${head}: conforming, no flips` : `${head}: ${problems.join(', ')}`;
+  const parts = [];
+  if (!info.manifold) parts.push('not a manifold');
+  if (info.euler_characteristic !== info.input_euler_characteristic) parts.push('another Euler characteristic than the input');
+  if (parts.length === 0) parts.push('conforming');
+  parts.push(info.flipped_quads > 0 ? `${count(info.flipped_quads)} flipped quads` : 'no flips');
+  const folded = Number(info.nonpositive_jacobian_quads) || 0;
+  if (folded > 0) parts.push(`${count(folded)} ${folded === 1 ? 'quad' : 'quads'} with a scaled Jacobian ≤ 0`);
+  return `${count(info.quads)} quads, ${count(info.irregular_vertices)} irregular vertices: ${parts.join(', ')}`;
 }
