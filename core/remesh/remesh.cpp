@@ -173,6 +173,7 @@ QuadMesh remesh_prepared(const layout::QuadLayout& layout, const RemeshPrep& pre
   QuadBuilder out;
   result.unlocated_points = extract_quads(layout, prep, result.lengths, out);
   result.seconds.push_back({"patch maps", seconds_since(start)});
+
   if (smoothing_rounds > 0) {
     start = Clock::now();
     std::vector<bool> fixed = out.is_node;

@@ -8,9 +8,9 @@
 //      integer lengths, the quality figures (quad_quality.h) and the seconds per step.
 // Throws InputError for an invalid layout or target (naming the patch or side at fault).
 //
-// What the size target does not change (the sides, their chains' lengths, each patch unfolded
-// with its Wachspress coordinates) is a RemeshPrep of the layout, made once: a new target then
-// solves only (8.1)-(8.3) again and places the points (the page's quad-count slider).
+// What the size target does not change (the sides with their parametric arc lengths, each patch
+// unfolded with its Wachspress coordinates) is a RemeshPrep of the layout, made once: a new target
+// then solves only (8.1)-(8.3) again and places the points (the page's quad-count slider).
 #pragma once
 
 #include <string>
