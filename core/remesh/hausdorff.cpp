@@ -33,10 +33,11 @@ double diagonal(const Mesh& mesh) {
 // The distance from p to the nearest triangle of the grid, when it is above `floor` (else some
 // distance <= floor, which cannot raise a largest distance of `floor`): the cube of half-width r
 // holds every point within r, so a nearest point found at distance <= r is the nearest; else r
-// grows to it. Most samples lie closer to the other mesh than the largest distance found so far:
-// they are settled by the first cube, and only the few far ones grow it.
+// grows to it (to at least `fallback` from an empty one). Once a largest distance is known, the
+// first look is the one cell around p (r = 0): most samples lie closer to the other mesh than
+// that distance and are settled there, and only the few far ones grow the cube.
 double distance_above(const TriangleGrid& grid, const Mesh& mesh, const Vector3d& p, double r,
-                      double floor) {
+                      double floor, double fallback) {
   for (;;) {
     double best = std::numeric_limits<double>::infinity();
     grid.for_each_triangle_near(p, r, [&](std::uint32_t t) {
@@ -46,7 +47,7 @@ double distance_above(const TriangleGrid& grid, const Mesh& mesh, const Vector3d
       best = std::min(best, (q - p).norm());
     });
     if (best <= r || best <= floor) return best;
-    r = std::isfinite(best) ? best : 2 * r;
+    r = std::isfinite(best) ? best : std::max(2 * r, fallback);
   }
 }
 
@@ -55,7 +56,8 @@ double one_sided(const std::vector<Vector3d>& from, const TriangleGrid& grid, co
                  double start, double floor = 0) {
   double largest = floor;
   for (const Vector3d& p : from)
-    largest = std::max(largest, distance_above(grid, to, p, start, largest));
+    largest =
+        std::max(largest, distance_above(grid, to, p, largest > 0 ? 0.0 : start, largest, start));
   return largest;
 }
 
