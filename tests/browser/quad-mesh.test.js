@@ -100,3 +100,41 @@ test('Quad mesh: the sphere layout gives a quad mesh drawn with its edges; the s
   await idle(page);
   assert.ok(await page.locator('[data-role=quad-mesh-result]').isHidden(), 'the old quad mesh is still listed');
 });
+
+test('Quad mesh: Cancel stops a remesh, the view keeps its quad mesh, and the next count lays out again in a fresh core', async ({ page, url }) => {
+  await openPage(page, url, '#sample=sphere');
+  await page.getByRole('button', { name: 'Compute quad layout' }).click();
+  await page.locator('[data-role=layout-figures] [data-figure=alpha]').filter({ hasText: /^5$/ }).waitFor();
+  await idle(page);
+  await moveSlider(page, 400);
+  await page.getByRole('button', { name: 'Compute quad mesh' }).click();
+  await remeshed(page, 400);
+  const shown = await quadFigure(page, 'quads');
+
+  // A move of the slider and Cancel in the same task: the remesh is stopped before it answers.
+  const target = await slider(page).evaluate((input) => {
+    input.value = String(Number(input.value) + 20);
+    input.dispatchEvent(new Event('input'));
+    input.dispatchEvent(new Event('change'));
+    document.querySelector('#status [data-role=cancel]').click();
+    return Number(document.querySelector('[data-role=quad-count-value]').textContent);
+  });
+  await page.getByText('Cancelled.').waitFor();
+  await idle(page);
+  assert.equal(await quadFigure(page, 'quads'), shown, 'the quad mesh on screen changed');
+  assert.equal(await quadFigure(page, 'target'), '400');
+
+  // The fresh worker has no layout: the remesh builds the mesh, field, graph and layout again.
+  const stages = [];
+  await page.exposeFunction('reportStage', (text) => stages.push(text));
+  await page.evaluate(() => {
+    const stage = document.querySelector('#status [data-role=stage]');
+    new MutationObserver(() => window.reportStage(stage.textContent)).observe(stage, { childList: true, characterData: true, subtree: true });
+  });
+  await page.getByRole('button', { name: 'Compute quad mesh' }).click();
+  await remeshed(page, target);
+  assert.ok(stages.some((text) => /fresh core/.test(text)), `stages: ${[...new Set(stages)].join(' | ')}`);
+  assert.ok(await message(page).isHidden(), 'an error was shown');
+  const quads = Number((await quadFigure(page, 'quads')).replace(/,/g, ''));
+  assert.ok(Math.abs(quads - target) <= 0.25 * target, `${quads} quads for ${target}`);
+});
