@@ -7,6 +7,11 @@
 // Prints per count the time of remeshLayout() (integer lengths, patch maps, check, Hausdorff) and
 // of the worker's display data (quadSurface, quadEdges), then the median and the largest of their
 // sum and how many took 200 ms or more. Not part of `npm test`: a timing, not a check.
+// Fertility (130 patches at alpha 5), on 2 cores shared with other builds (load average 5 to 8):
+// the first remesh 150-450 ms (the prep 70-190 ms of it); 16 moves median 56-71 ms, largest
+// 170-192 ms (20,000 quads; the Hausdorff distance is most of every move). In the page
+// (tests/browser/remesh_slider_timing.js), from the release to the figures and layers shown:
+// median 82-89 ms, largest 200-431 ms, at 20,000 quads, the more loaded run the slower.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
