@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "layout_test_util.h"
@@ -139,6 +140,24 @@ TEST(Remesh, QuadCountFollowsTheTarget) {
   expect_good_quad_mesh(sphere(), b);
 }
 
+// The page's slider: one prep of the layout, then any number of targets, each the very mesh a
+// fresh remesh_layout() makes.
+TEST(Remesh, OnePrepServesEveryTargetAsAFreshRemesh) {
+  const remesh::RemeshPrep prep = remesh::prepare_remesh(sphere().layout);
+  EXPECT_EQ(prep.charts.size(), sphere().layout.check.patch_count);
+  EXPECT_EQ(prep.tracks.size(), prep.sides.sides.size());
+  for (std::size_t quads : {150, 900, 3000}) {
+    remesh::SizeTarget target;
+    target.quads = quads;
+    const remesh::QuadMesh kept = remesh::remesh_prepared(sphere().layout, prep, target);
+    const remesh::QuadMesh fresh = remesh::remesh_layout(sphere().layout, target);
+    EXPECT_EQ(kept.mesh.positions, fresh.mesh.positions) << quads;
+    EXPECT_EQ(kept.mesh.face_vertices, fresh.mesh.face_vertices) << quads;
+    EXPECT_EQ(kept.mesh.face_attributes.at("patch"), fresh.mesh.face_attributes.at("patch"));
+    EXPECT_EQ(kept.lengths.segments, fresh.lengths.segments);
+  }
+}
+
 TEST(Remesh, EdgeLengthSetsTheScale) {
   remesh::SizeTarget coarse, fine;
   coarse.edge_length = 0.3;
@@ -225,6 +244,49 @@ TEST(Remesh, HausdorffDistanceOfSpheres) {
   const double d = remesh::relative_hausdorff(unit, larger);
   EXPECT_GE(d, 0.1 / (2 * std::sqrt(3.0)) - 1e-9);
   EXPECT_LT(d, 0.15 / (2 * std::sqrt(3.0)));
+}
+
+// Every sample (vertices and face centroids) of `from` against every triangle of `to`.
+double brute_force_one_sided(const Mesh& from, const Mesh& to) {
+  std::vector<Eigen::Vector3d> samples = from.positions;
+  for (std::size_t f = 0; f < from.face_count(); ++f) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (Index v : from.face(f)) centroid += from.positions[v];
+    samples.push_back(centroid / double(from.face_size(f)));
+  }
+  double largest = 0;
+  for (const Eigen::Vector3d& p : samples) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t f = 0; f < to.face_count(); ++f) {
+      const auto c = to.face(f);
+      for (std::size_t i = 1; i + 1 < c.size(); ++i)
+        nearest = std::min(nearest,
+                           (remesh::nearest_on_triangle(p, to.positions[c[0]], to.positions[c[i]],
+                                                        to.positions[c[i + 1]]) -
+                            p)
+                               .norm());
+    }
+    largest = std::max(largest, nearest);
+  }
+  return largest;
+}
+
+// One reference for several meshes, each distance what every sample against every triangle gives
+// (the grid's early settling of near samples loses none).
+TEST(Remesh, HausdorffReferenceGivesTheBruteForceDistanceForEveryMesh) {
+  const Mesh unit = icosphere(2);
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& x : unit.positions) box.extend(x);
+  const remesh::HausdorffReference reference(unit);
+  for (double scale : {1.0, 1.1, 0.8}) {
+    Mesh other = icosphere(scale == 1.0 ? 2 : 1);
+    for (Eigen::Vector3d& x : other.positions) x = scale * x + Eigen::Vector3d(0.05, 0, 0);
+    const double expected =
+        std::max(brute_force_one_sided(unit, other), brute_force_one_sided(other, unit)) /
+        box.diagonal().norm();
+    EXPECT_NEAR(reference.relative_to(other), expected, 1e-14) << scale;
+    EXPECT_EQ(remesh::relative_hausdorff(unit, other), reference.relative_to(other));
+  }
 }
 
 TEST(Remesh, InvalidLayoutIsAnInputErrorNamingTheProblem) {

@@ -125,6 +125,7 @@ val layout_graph(const val& options, const val& on_progress) {
     Session& s = session_with_param();
     s.layout_graph.reset();
     s.resolve_cache = {};
+    s.clear_quad_mesh();
     layout::LayoutOptions layout_options;
     layout_options.rho = number_option(options, "rho", layout_options.rho);
     if (!(layout_options.rho > 1)) throw InputError("option 'rho' must be a number above 1");
@@ -146,6 +147,7 @@ val layout_solve(double alpha, const val& options, const val& on_progress) {
     Session& s = session_with_graph();
     if (!(alpha >= 0)) throw InputError("alpha must be a number >= 0");
     const layout::Charts charts = charts_of(s);
+    s.clear_quad_mesh();
     layout::solve_layout(charts, *s.layout_graph, alpha, solver_of(options), Limits(),
                          js_progress(on_progress), &s.resolve_cache);
     const layout::QuadLayout& l = *s.resolve_cache.last;

@@ -3,6 +3,7 @@
 // products; computing a stage clears the ones after it.
 #pragma once
 
+#include <memory>
 #include <optional>
 
 #include "field/cross_field.h"
@@ -11,6 +12,8 @@
 #include "mesh/connectivity.h"
 #include "mesh/mesh.h"
 #include "param/seamless_param.h"
+#include "remesh/hausdorff.h"
+#include "remesh/remesh.h"
 
 namespace tessera::wasm {
 
@@ -26,6 +29,12 @@ struct Session {
   // alpha solved (resolve_cache.last), kept for its export.
   std::optional<layout::LayoutGraph> layout_graph;
   layout::ResolveCache resolve_cache;
+  // The quad mesh of that layout (Ch. 8): what its size target does not change (made on the first
+  // remesh of the layout), and the quad mesh of the last target, kept for its export.
+  std::optional<remesh::RemeshPrep> remesh_prep;
+  std::optional<remesh::QuadMesh> quad_mesh;
+  // The mesh's side of the Hausdorff distance to its quad meshes (it points into `mesh`).
+  std::unique_ptr<remesh::HausdorffReference> hausdorff;
 
   void set_mesh(const Mesh& shown) {
     *this = Session();
@@ -37,6 +46,13 @@ struct Session {
     param.reset();
     layout_graph.reset();
     resolve_cache = {};
+    clear_quad_mesh();
+  }
+
+  // A new layout makes the quad mesh products stale.
+  void clear_quad_mesh() {
+    remesh_prep.reset();
+    quad_mesh.reset();
   }
 };
 

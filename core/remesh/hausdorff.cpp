@@ -7,7 +7,6 @@
 
 #include <Eigen/Geometry>
 
-#include "mesh/triangle_grid.h"
 #include "remesh/smoothing.h"
 
 namespace tessera::remesh {
@@ -31,9 +30,14 @@ double diagonal(const Mesh& mesh) {
   return box.diagonal().norm();
 }
 
-// The distance from p to the nearest triangle of the grid: the cube of half-width r holds every
-// point within r, so a nearest point found at distance <= r is the nearest; else r grows to it.
-double distance_to(const TriangleGrid& grid, const Mesh& mesh, const Vector3d& p, double r) {
+// The distance from p to the nearest triangle of the grid, when it is above `floor` (else some
+// distance <= floor, which cannot raise a largest distance of `floor`): the cube of half-width r
+// holds every point within r, so a nearest point found at distance <= r is the nearest; else r
+// grows to it (to at least `fallback` from an empty one). Once a largest distance is known, the
+// first look is the one cell around p (r = 0): most samples lie closer to the other mesh than
+// that distance and are settled there, and only the few far ones grow the cube.
+double distance_above(const TriangleGrid& grid, const Mesh& mesh, const Vector3d& p, double r,
+                      double floor, double fallback) {
   for (;;) {
     double best = std::numeric_limits<double>::infinity();
     grid.for_each_triangle_near(p, r, [&](std::uint32_t t) {
@@ -42,26 +46,37 @@ double distance_to(const TriangleGrid& grid, const Mesh& mesh, const Vector3d& p
           nearest_on_triangle(p, mesh.positions[c[0]], mesh.positions[c[1]], mesh.positions[c[2]]);
       best = std::min(best, (q - p).norm());
     });
-    if (best <= r) return best;
-    r = std::isfinite(best) ? best : 2 * r;
+    if (best <= r || best <= floor) return best;
+    r = std::isfinite(best) ? best : std::max(2 * r, fallback);
   }
 }
 
-double one_sided(const Mesh& from, const Mesh& to, double start) {
-  const TriangleGrid grid(to);
-  double largest = 0;
-  for (const Vector3d& p : samples(from))
-    largest = std::max(largest, distance_to(grid, to, p, start));
+// The largest distance from the points `from` to the mesh `to`, or `floor` if that is larger.
+double one_sided(const std::vector<Vector3d>& from, const TriangleGrid& grid, const Mesh& to,
+                 double start, double floor = 0) {
+  double largest = floor;
+  for (const Vector3d& p : from)
+    largest =
+        std::max(largest, distance_above(grid, to, p, largest > 0 ? 0.0 : start, largest, start));
   return largest;
 }
 
 }  // namespace
 
-double relative_hausdorff(const Mesh& a, const Mesh& b) {
-  const double d = diagonal(a);
+HausdorffReference::HausdorffReference(const Mesh& a)
+    : a_(&a), grid_(a), samples_(samples(a)), diagonal_(diagonal(a)) {}
+
+double HausdorffReference::relative_to(const Mesh& b) const {
+  const double d = diagonal_;
   if (!(d > 0) || b.face_count() == 0) return std::numeric_limits<double>::infinity();
   const double start = 1e-3 * d;
-  return std::max(one_sided(a, b, start), one_sided(b, a, start)) / d;
+  const double from_a = one_sided(samples_, TriangleGrid(b), b, start);
+  // The other direction matters only where it exceeds this one: from_a is its floor.
+  return one_sided(samples(b), grid_, *a_, start, from_a) / d;
+}
+
+double relative_hausdorff(const Mesh& a, const Mesh& b) {
+  return HausdorffReference(a).relative_to(b);
 }
 
 }  // namespace tessera::remesh

@@ -139,27 +139,30 @@ Eigen::Vector4d wachspress(const std::array<Vector2d, 4>& q, const Vector2d& x) 
   return w / w.sum();
 }
 
-void side_lengths(const layout::RefinedMesh& refined, const Connectivity& connectivity,
-                  const PatchSides& sides, std::vector<double>& length,
-                  std::vector<double>& length_3d) {
-  length.assign(sides.sides.size(), 0);
-  length_3d.assign(sides.sides.size(), 0);
-  for (std::size_t i = 0; i < sides.sides.size(); ++i) {
-    const std::vector<Index>& v = sides.sides[i].vertices;
-    for (std::size_t k = 0; k + 1 < v.size(); ++k) {
-      length[i] += parametric_length(refined, connectivity, v[k], v[k + 1]);
-      length_3d[i] += (refined.mesh.positions[v[k + 1]] - refined.mesh.positions[v[k]]).norm();
-    }
+SideTrack side_track(const layout::RefinedMesh& refined, const Connectivity& connectivity,
+                     const LayoutSide& side) {
+  const std::vector<Index>& v = side.vertices;
+  SideTrack track;
+  track.at.push_back(0);
+  for (std::size_t k = 0; k + 1 < v.size(); ++k) {
+    track.at.push_back(track.at.back() + parametric_length(refined, connectivity, v[k], v[k + 1]));
+    track.normal.push_back(face_normal_at(refined, connectivity, v[k], v[k + 1]));
   }
+  return track;
 }
 
-std::vector<SurfaceSample> side_points(const layout::RefinedMesh& refined,
-                                       const Connectivity& connectivity, const LayoutSide& side,
-                                       int segments) {
+double side_length_3d(const layout::RefinedMesh& refined, const LayoutSide& side) {
   const std::vector<Index>& v = side.vertices;
-  std::vector<double> at{0};  // parametric arc length at each vertex
+  double length = 0;
   for (std::size_t k = 0; k + 1 < v.size(); ++k)
-    at.push_back(at.back() + parametric_length(refined, connectivity, v[k], v[k + 1]));
+    length += (refined.mesh.positions[v[k + 1]] - refined.mesh.positions[v[k]]).norm();
+  return length;
+}
+
+std::vector<SurfaceSample> side_points(const layout::RefinedMesh& refined, const LayoutSide& side,
+                                       const SideTrack& track, int segments) {
+  const std::vector<Index>& v = side.vertices;
+  const std::vector<double>& at = track.at;
   std::vector<SurfaceSample> points;
   std::size_t k = 0;
   for (int i = 0; i <= segments; ++i) {
@@ -169,34 +172,49 @@ std::vector<SurfaceSample> side_points(const layout::RefinedMesh& refined,
     const double t = span > 0 ? std::clamp((s - at[k]) / span, 0.0, 1.0) : 0.0;
     const Vector3d& a = refined.mesh.positions[v[k]];
     const Vector3d& b = refined.mesh.positions[v[k + 1]];
-    points.push_back({(1 - t) * a + t * b, face_normal_at(refined, connectivity, v[k], v[k + 1])});
+    points.push_back({(1 - t) * a + t * b, track.normal[k]});
   }
   points.front().position = refined.mesh.positions[v.front()];
   points.back().position = refined.mesh.positions[v.back()];
   return points;
 }
 
-std::vector<SurfaceSample> patch_interior_points(const layout::RefinedMesh& refined,
-                                                 const Connectivity& connectivity,
-                                                 const std::vector<Index>& faces,
-                                                 const std::vector<Index>& corners, int n, int m,
-                                                 std::size_t& unlocated) {
+PatchChart patch_chart(const layout::RefinedMesh& refined, const Connectivity& connectivity,
+                       const std::vector<Index>& faces, const std::vector<Index>& corners) {
   const std::map<Index, Vector2d> uv = unfold_patch(refined, connectivity, faces);
   const std::array<Vector2d, 4> quad{uv.at(corners[0]), uv.at(corners[1]), uv.at(corners[2]),
                                      uv.at(corners[3])};
-  const std::array<Vector2d, 4> rect{Vector2d(0, 0), Vector2d(n, 0), Vector2d(n, m),
-                                     Vector2d(0, m)};
-  std::map<Index, Vector2d> in_rect;
+  PatchChart chart;
+  chart.faces = faces;
+  std::map<Index, std::uint32_t> local;
   for (const auto& [v, x] : uv) {
-    const Eigen::Vector4d w = wachspress(quad, x);
-    Vector2d y = Vector2d::Zero();
-    for (int i = 0; i < 4; ++i) y += w[i] * rect[i];
-    in_rect[v] = y;
+    local[v] = static_cast<std::uint32_t>(chart.weights.size());
+    chart.weights.push_back(wachspress(quad, x));
   }
-  std::vector<MappedTriangle> triangles;
   for (Index f : faces) {
     const auto c = refined.mesh.face(f);
-    triangles.push_back({f, {in_rect.at(c[0]), in_rect.at(c[1]), in_rect.at(c[2])}});
+    chart.local.push_back({local.at(c[0]), local.at(c[1]), local.at(c[2])});
+  }
+  return chart;
+}
+
+std::vector<SurfaceSample> patch_interior_points(const layout::RefinedMesh& refined,
+                                                 const PatchChart& chart, int n, int m,
+                                                 std::size_t& unlocated) {
+  const std::array<Vector2d, 4> rect{Vector2d(0, 0), Vector2d(n, 0), Vector2d(n, m),
+                                     Vector2d(0, m)};
+  std::vector<Vector2d> in_rect;
+  in_rect.reserve(chart.weights.size());
+  for (const Eigen::Vector4d& w : chart.weights) {
+    Vector2d y = Vector2d::Zero();
+    for (int i = 0; i < 4; ++i) y += w[i] * rect[i];
+    in_rect.push_back(y);
+  }
+  std::vector<MappedTriangle> triangles;
+  triangles.reserve(chart.faces.size());
+  for (std::size_t k = 0; k < chart.faces.size(); ++k) {
+    const auto& c = chart.local[k];
+    triangles.push_back({chart.faces[k], {in_rect[c[0]], in_rect[c[1]], in_rect[c[2]]}});
   }
   const int columns = n - 1, rows = m - 1;
   std::vector<SurfaceSample> points(std::size_t(std::max(0, columns)) * std::max(0, rows));

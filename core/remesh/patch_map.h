@@ -11,12 +11,17 @@
 //  - Each integer point inside the rectangle is found in a mapped triangle and pulled back to 3D by
 //    the triangle's barycentric coordinates. The points on the sides are placed by side_points(),
 //    once per side, by parametric arc length, so neighbouring patches share them.
+// The unfolding and the Wachspress coordinates (PatchChart) and the sides' arc lengths (SideTrack)
+// do not depend on n and m: they are computed once per layout, and a new quad count only places
+// the points again.
 //
 // In:  the refined mesh of a layout (per corner uv in its parent face's chart), its connectivity,
 //      the patch ids, the sides (patch_sides.h) and the integer lengths (side_lengths.h).
 // Out: 3D points with the surface normal under them.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/Core>
@@ -31,25 +36,43 @@ struct SurfaceSample {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // of the refined face it lies on
 };
 
-// Per side, its length in parameter space (measured in the chart of a face along each edge) and
-// along the surface.
-void side_lengths(const layout::RefinedMesh& refined, const Connectivity& connectivity,
-                  const PatchSides& sides, std::vector<double>& length,
-                  std::vector<double>& length_3d);
+// What does not depend on the side's number of segments: the parametric arc length at each of
+// its vertices (measured in the chart of a face along each edge, from 0) and, per edge, the normal
+// of the face along it.
+struct SideTrack {
+  std::vector<double> at;
+  std::vector<Eigen::Vector3d> normal;
+  double length() const { return at.back(); }
+};
+
+SideTrack side_track(const layout::RefinedMesh& refined, const Connectivity& connectivity,
+                     const LayoutSide& side);
+
+// The side's length along the surface.
+double side_length_3d(const layout::RefinedMesh& refined, const LayoutSide& side);
 
 // The segments + 1 points of side `side` at equal parametric arc length, from its first vertex to
 // its last.
-std::vector<SurfaceSample> side_points(const layout::RefinedMesh& refined,
-                                       const Connectivity& connectivity, const LayoutSide& side,
-                                       int segments);
+std::vector<SurfaceSample> side_points(const layout::RefinedMesh& refined, const LayoutSide& side,
+                                       const SideTrack& track, int segments);
 
-// The grid points (i, j), 0 < i < n, 0 < j < m, of patch p, in the order (i - 1) + (j - 1)(n - 1).
-// `faces` are the refined faces of the patch. `unlocated` counts the points found in no mapped
-// triangle (placed on the nearest one instead).
+// A patch unfolded into one chart, as the Wachspress coordinates of its vertices in its
+// quadrilateral: what does not depend on the patch's n x m.
+struct PatchChart {
+  std::vector<Index> faces;                         // the refined faces of the patch
+  std::vector<std::array<std::uint32_t, 3>> local;  // per face, its corners into `weights`
+  std::vector<Eigen::Vector4d> weights;             // per vertex of the patch
+};
+
+// `faces` are the refined faces of the patch, `corners` its four corner vertices.
+PatchChart patch_chart(const layout::RefinedMesh& refined, const Connectivity& connectivity,
+                       const std::vector<Index>& faces, const std::vector<Index>& corners);
+
+// The grid points (i, j), 0 < i < n, 0 < j < m, of the patch, in the order
+// (i - 1) + (j - 1)(n - 1). `unlocated` counts the points found in no mapped triangle (placed on
+// the nearest one instead).
 std::vector<SurfaceSample> patch_interior_points(const layout::RefinedMesh& refined,
-                                                 const Connectivity& connectivity,
-                                                 const std::vector<Index>& faces,
-                                                 const std::vector<Index>& corners, int n, int m,
+                                                 const PatchChart& chart, int n, int m,
                                                  std::size_t& unlocated);
 
 // Wachspress coordinates of x in the quadrilateral q (counterclockwise), in the product form

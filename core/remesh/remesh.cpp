@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <string>
 
-#include "remesh/patch_map.h"
-#include "remesh/patch_sides.h"
 #include "remesh/smoothing.h"
 
 namespace tessera::remesh {
@@ -31,14 +30,14 @@ struct QuadBuilder {
 
 // The quad-mesh vertex of every point on every side (nodes included, each once).
 std::vector<std::vector<Index>> side_vertices(const layout::RefinedMesh& refined,
-                                              const Connectivity& c, const PatchSides& sides,
-                                              const SideLengths& lengths, QuadBuilder& out) {
+                                              const RemeshPrep& prep, const SideLengths& lengths,
+                                              QuadBuilder& out) {
   std::map<Index, Index> node;  // refined vertex -> quad-mesh vertex
   std::vector<std::vector<Index>> result;
-  for (std::size_t i = 0; i < sides.sides.size(); ++i) {
-    const LayoutSide& side = sides.sides[i];
+  for (std::size_t i = 0; i < prep.sides.sides.size(); ++i) {
+    const LayoutSide& side = prep.sides.sides[i];
     const std::vector<SurfaceSample> points =
-        side_points(refined, c, side, lengths.segments[lengths.chain[i]]);
+        side_points(refined, side, prep.tracks[i], lengths.segments[lengths.chain[i]]);
     std::vector<Index>& vertices = result.emplace_back();
     for (std::size_t k = 0; k < points.size(); ++k) {
       const bool end = k == 0 || k + 1 == points.size();
@@ -96,25 +95,23 @@ std::vector<std::vector<Index>> faces_by_patch(const Mesh& refined, std::size_t 
   return faces;
 }
 
-std::size_t extract_quads(const layout::QuadLayout& layout, const Connectivity& c,
-                          const PatchSides& sides, const SideLengths& lengths, QuadBuilder& out) {
+std::size_t extract_quads(const layout::QuadLayout& layout, const RemeshPrep& prep,
+                          const SideLengths& lengths, QuadBuilder& out) {
   const layout::RefinedMesh& refined = layout.refined;
-  const std::vector<std::vector<Index>> on_sides = side_vertices(refined, c, sides, lengths, out);
-  const std::vector<std::vector<Index>> faces =
-      faces_by_patch(refined.mesh, layout.check.patch_count);
+  const std::vector<std::vector<Index>> on_sides = side_vertices(refined, prep, lengths, out);
   std::vector<std::int32_t>& patch_of_quad = out.mesh.face_attributes["patch"];
   std::size_t unlocated = 0;
-  for (std::size_t p = 0; p < sides.patches.size(); ++p) {
+  for (std::size_t p = 0; p < prep.sides.patches.size(); ++p) {
     PatchGrid grid;
     grid.n = lengths.size[p][0];
     grid.m = lengths.size[p][1];
     for (int k = 0; k < 4; ++k) {
-      grid.side[k] = &on_sides[sides.patches[p][k].side];
-      grid.forward[k] = sides.patches[p][k].forward;
+      grid.side[k] = &on_sides[prep.sides.patches[p][k].side];
+      grid.forward[k] = prep.sides.patches[p][k].forward;
     }
     std::size_t missed = 0;
-    for (const SurfaceSample& s : patch_interior_points(
-             refined, c, faces[p], layout.check.corners[p], grid.n, grid.m, missed))
+    for (const SurfaceSample& s :
+         patch_interior_points(refined, prep.charts[p], grid.n, grid.m, missed))
       grid.interior.push_back(out.add(s));
     unlocated += missed;
     for (int j = 0; j < grid.m; ++j)
@@ -127,24 +124,54 @@ std::size_t extract_quads(const layout::QuadLayout& layout, const Connectivity& 
   return unlocated;
 }
 
+void add_seconds(std::vector<layout::StageSeconds>& to, const std::string& stage, double seconds) {
+  for (layout::StageSeconds& s : to)
+    if (s.stage == stage) {
+      s.seconds += seconds;
+      return;
+    }
+  to.push_back({stage, seconds});
+}
+
 }  // namespace
 
-QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& target,
-                       int smoothing_rounds, const Mesh* surface) {
+RemeshPrep prepare_remesh(const layout::QuadLayout& layout) {
+  RemeshPrep prep;
+  auto start = Clock::now();
+  const layout::RefinedMesh& refined = layout.refined;
+  prep.connectivity = build_connectivity(refined.mesh);
+  prep.sides =
+      patch_sides(prep.connectivity, refined.mesh.face_attributes.at("patch"), layout.check);
+  for (const LayoutSide& side : prep.sides.sides) {
+    prep.tracks.push_back(side_track(refined, prep.connectivity, side));
+    prep.length_3d.push_back(side_length_3d(refined, side));
+  }
+  prep.seconds.push_back({"integer lengths", seconds_since(start)});
+
+  start = Clock::now();
+  const std::vector<std::vector<Index>> faces =
+      faces_by_patch(refined.mesh, layout.check.patch_count);
+  for (std::size_t p = 0; p < prep.sides.patches.size(); ++p)
+    prep.charts.push_back(
+        patch_chart(refined, prep.connectivity, faces[p], layout.check.corners[p]));
+  prep.seconds.push_back({"patch maps", seconds_since(start)});
+  return prep;
+}
+
+QuadMesh remesh_prepared(const layout::QuadLayout& layout, const RemeshPrep& prep,
+                         const SizeTarget& target, int smoothing_rounds, const Mesh* surface) {
   QuadMesh result;
   result.patch_count = layout.check.patch_count;
   auto start = Clock::now();
-  const Connectivity c = build_connectivity(layout.refined.mesh);
-  const PatchSides sides =
-      patch_sides(c, layout.refined.mesh.face_attributes.at("patch"), layout.check);
-  std::vector<double> length, length_3d;
-  side_lengths(layout.refined, c, sides, length, length_3d);
-  result.lengths = integer_side_lengths(sides, std::move(length), std::move(length_3d), target);
+  std::vector<double> length;
+  length.reserve(prep.tracks.size());
+  for (const SideTrack& track : prep.tracks) length.push_back(track.length());
+  result.lengths = integer_side_lengths(prep.sides, std::move(length), prep.length_3d, target);
   result.seconds.push_back({"integer lengths", seconds_since(start)});
 
   start = Clock::now();
   QuadBuilder out;
-  result.unlocated_points = extract_quads(layout, c, sides, result.lengths, out);
+  result.unlocated_points = extract_quads(layout, prep, result.lengths, out);
   result.seconds.push_back({"patch maps", seconds_since(start)});
 
   if (smoothing_rounds > 0) {
@@ -164,6 +191,15 @@ QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& targe
     result.nonpositive_corners_at_nodes += out.is_node[v];
   result.mesh = std::move(out.mesh);
   result.seconds.push_back({"check", seconds_since(start)});
+  return result;
+}
+
+QuadMesh remesh_layout(const layout::QuadLayout& layout, const SizeTarget& target,
+                       int smoothing_rounds, const Mesh* surface) {
+  const RemeshPrep prep = prepare_remesh(layout);
+  QuadMesh result = remesh_prepared(layout, prep, target, smoothing_rounds, surface);
+  for (const layout::StageSeconds& s : prep.seconds)
+    add_seconds(result.seconds, s.stage, s.seconds);
   return result;
 }
 

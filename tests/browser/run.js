@@ -7,6 +7,7 @@ import './surface.test.js';
 import './drawn.test.js';
 import './large-mesh.test.js';
 import './layout.test.js';
+import './quad-mesh.test.js';
 import './gallery.test.js';
 
 const ok = await runTests(process.argv[2] ?? '');

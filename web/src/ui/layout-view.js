@@ -13,11 +13,13 @@ const LAYERS = ['patches', 'arcs', 'layout-singularities'];
  * view's field and parameterization, its patches, arcs and singularities, the checker's verdict,
  * the figures, an alpha slider that solves P1 again on the graph the worker keeps, and exports.
  * root: the view's section; viewer; field (FieldView); request(label, command, payload) runs a
- * worker job (resolves undefined when it failed or was cancelled).
+ * worker job (resolves undefined when it failed or was cancelled); onLayoutChange(layout) when the
+ * layout on screen changes: { mesh, field, h, alpha } of a valid one, null for none or an invalid
+ * one (the Quad mesh view remeshes the valid ones).
  */
 export class LayoutView {
-  constructor({ root, viewer, field, request }) {
-    Object.assign(this, { viewer, field, request });
+  constructor({ root, viewer, field, request, onLayoutChange = () => {} }) {
+    Object.assign(this, { viewer, field, request, onLayoutChange });
     this.part = (role) => root.querySelector(`[data-role=${role}]`);
     this.alpha = this.part('alpha');
     this.mesh = null; // where the mesh on screen came from
@@ -102,6 +104,8 @@ export class LayoutView {
     );
     this.part('layout-result').hidden = false;
     this.part('layout-result').scrollIntoView({ block: 'nearest' });
+    const { mesh, field, h, alpha } = payload;
+    this.onLayoutChange(result.info.valid ? { mesh, field, h, alpha } : null);
   }
 
   showLayers(result) {
@@ -131,6 +135,7 @@ export class LayoutView {
     for (const layer of LAYERS) this.viewer.setLayer(layer, null);
     this.viewer.setSurfaceCovered(false);
     this.part('layout-result').hidden = true;
+    this.onLayoutChange(null);
   }
 
   showAlpha() {

@@ -4,12 +4,14 @@ import { showInfo } from './info-panel.js';
 import { downloadBytes, downloadName } from './download.js';
 import { FieldView } from './field-view.js';
 import { LayoutView } from './layout-view.js';
+import { QuadMeshView } from './quad-mesh-view.js';
 
 const DEFAULT_SAMPLE = 'genus2';
 
 /**
  * The Quad layout mode: a mesh from a sample or a file, its figures, its export, the Field view
- * of its cross field and parameterization, and the Layout view of its quad layout.
+ * of its cross field and parameterization, the Layout view of its quad layout and the Quad mesh
+ * view of the quad mesh extracted from a valid layout.
  * panel: the mode's section of the page; viewer, client (WorkerClient), jobs (Jobs), status (Status);
  * onStateChange(partial state) when what a link should share changes.
  */
@@ -29,11 +31,17 @@ export class QuadLayoutMode {
       onStateChange,
       onFieldChange: () => this.layout.fieldChanged(),
     });
+    this.quadMesh = new QuadMeshView({
+      root: this.part('quad-mesh-view'),
+      viewer,
+      request: (...args) => this.request(...args),
+    });
     this.layout = new LayoutView({
       root: this.part('layout-view'),
       viewer,
       field: this.field,
       request: (...args) => this.request(...args),
+      onLayoutChange: (layout) => this.quadMesh.setLayout(layout),
     });
 
     this.part('samples').addEventListener('change', (event) => this.showSample(event.target.value));

@@ -39,6 +39,15 @@ export const COMMANDS = Object.freeze({
   // The layout of { mesh, field, h, alpha } as a file ('glb' or 'ply'), computed again if the core
   // holds another one.
   layoutExport: 'layoutExport', // payload: { mesh, field, h, alpha, format } -> { bytes }
+  // The quad mesh (thesis Ch. 8) of the layout of { mesh, field, h, alpha } (laid out again if the
+  // core holds another one; it must be valid) for a target quad count. The worker keeps what the
+  // count does not change: another count only solves the integer lengths again and places the
+  // points. info: `tessera remesh --json`'s figures plus prepared_before; remeshSeconds: the
+  // remesh in the worker; surface: the quads coloured by the layout's patches { positions,
+  // normals, colors, triangles }; edges: the quads' edges, each once (Float32Array, 6 per edge).
+  quadMesh: 'quadMesh', // payload: { mesh, field, h, alpha, quads } -> { info, remeshSeconds, surface, edges }
+  // That quad mesh as a file ('obj' or 'glb', with _PATCH per face as `tessera remesh -o`).
+  quadMeshExport: 'quadMeshExport', // payload: { mesh, field, h, alpha, quads, format } -> { bytes }
   exportGlb: 'exportGlb', // payload: { positions, triangles, faceIds?, colors?, extras? } -> { bytes }
   // Regular maps. A map is a catalog name (R3.1, R3.1' for the dual) or a presentation in Conder's
   // text format; its info is { name, p, q, order, vertices, edges, faces, genus, orientable, euler,

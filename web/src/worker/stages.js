@@ -21,6 +21,12 @@ export const SOLVE_STAGES = Object.freeze([
   ['exact', 'Solving program P1 (exact solver)'],
   ['arcs', 'Tracing the arcs and cutting the mesh into patches'],
 ]);
+// The core's stages of a quad mesh from a layout (remesh_bindings.cpp), in order.
+export const REMESH_STAGES = Object.freeze([
+  ['remesh prep', 'Unfolding the patches and measuring their sides'],
+  ['remesh', 'Integer side lengths and the patches mapped onto their rectangles'],
+  ['hausdorff', 'Measuring the distance to the input'],
+]);
 // The core's stages of a regular surface, in order.
 // A map drawn on a target's surface: the target's surface, then the drawing (mapped_map.cpp).
 export const DRAWN_STAGES = Object.freeze([

@@ -7,12 +7,14 @@ import { tiledSurface } from './surface-display.js';
 import { catalogOf, catalogText, drawMap, dropCore, hasDrawn, loadCore, realizations } from './core.js';
 import { quarterTubeColor } from '../viewer/palette.js';
 import { arcSegments, patchSurface } from './layout-display.js';
+import { quadEdges, quadSurface } from './quad-mesh-display.js';
 import { MAX_PRESOLVE_SECONDS, presolveInTurn, presolveOrder } from './presolve.js';
 import {
   FIELD_STAGES,
   GRAPH_STAGES,
   PARAM_STAGES,
   PRINT_STAGES,
+  REMESH_STAGES,
   SOLVE_STAGES,
   SURFACE_STAGES,
   planStages,
@@ -106,6 +108,25 @@ const handlers = {
     if (shown.layoutKey !== layoutKey(field, h, alpha)) layoutOf(shown, { field, h, alpha }, progress, 0.8);
     progress(`Writing the ${format === 'ply' ? 'PLY' : 'GLB'} file`, 0.8);
     return { bytes: format === 'ply' ? shown.module.layoutPly() : shown.module.layoutGlb() };
+  },
+
+  async [COMMANDS.quadMesh]({ mesh, field, h, alpha, quads }, progress) {
+    const shown = await sessionOf(mesh, progress);
+    const { result, remeshSeconds } = quadMeshOf(shown, { field, h, alpha, quads }, progress, 0.9);
+    progress('Preparing the view', 0.9);
+    return {
+      info: result.info,
+      remeshSeconds,
+      surface: quadSurface(result, result.patchColors),
+      edges: quadEdges(result.positions, result.quads),
+    };
+  },
+
+  async [COMMANDS.quadMeshExport]({ mesh, field, h, alpha, quads, format }, progress) {
+    const shown = await sessionOf(mesh, progress);
+    if (shown.quadKey !== quadKey(field, h, alpha, quads)) quadMeshOf(shown, { field, h, alpha, quads }, progress, 0.8);
+    progress(`Writing the ${String(format).toUpperCase()} file`, 0.8);
+    return { bytes: shown.module.remeshExport(String(format)) };
   },
 
   async [COMMANDS.exportGlb](payload, progress) {
@@ -223,6 +244,7 @@ function remember(module, id, mesh) {
     graphKey: null,
     graph: null,
     layoutKey: null,
+    quadKey: null,
   };
   return mesh;
 }
@@ -256,6 +278,7 @@ function layoutOf(shown, { field, h, alpha }, progress, to) {
   const key = paramKey(field, h);
   const resolved = shown.graphKey === key;
   shown.layoutKey = null;
+  shown.quadKey = null;
   let from = 0.05;
   if (!resolved) {
     // Shares of the bar as the stages' times on fertility (28k triangles).
@@ -275,6 +298,26 @@ function layoutOf(shown, { field, h, alpha }, progress, to) {
   return { result, resolved, solveSeconds };
 }
 
+// The quad mesh of the session's layout at { field, h, alpha } for a target count: the layout
+// computed again unless the session holds it, then the remesh (which the core answers from what it
+// keeps of the layout). Progress up to `to`. Returns { result (the core's), remeshSeconds }.
+function quadMeshOf(shown, { field, h, alpha, quads }, progress, to) {
+  let from = 0.05;
+  if (shown.layoutKey !== layoutKey(field, h, alpha)) {
+    layoutOf(shown, { field, h, alpha }, progress, 0.6);
+    from = 0.6;
+  }
+  shown.quadKey = null;
+  const onProgress = stagedProgress(planStages(REMESH_STAGES, [2, 2, 1], from, to), progress);
+  const started = performance.now();
+  const result = shown.module.remeshLayout({ quads: Number(quads) }, onProgress);
+  const remeshSeconds = (performance.now() - started) / 1000;
+  shown.quadKey = quadKey(field, h, alpha, quads);
+  return { result, remeshSeconds };
+}
+
+const quadKey = (field, h, alpha, quads) => `${layoutKey(field, h, alpha)} ${quads}`;
+
 // The slider's other positions solved ahead, nearest to alpha first, while no request comes in
 // (presolve.js); any request stops it, a layout starts it again around its alpha. Each presolve
 // stops at MAX_PRESOLVE_SECONDS, so that a request waits no longer than that for it.
@@ -288,7 +331,7 @@ function presolveAround(shown, alpha, alphas) {
 
 // The parameterization of the session's field with unit h; it replaces the graph and the layout.
 function computeParam(shown, field, h, onProgress) {
-  Object.assign(shown, { paramKey: null, graphKey: null, graph: null, layoutKey: null });
+  Object.assign(shown, { paramKey: null, graphKey: null, graph: null, layoutKey: null, quadKey: null });
   const result = shown.module.seamlessParam({ h }, onProgress);
   shown.paramKey = paramKey(field, h);
   return result;
@@ -298,7 +341,7 @@ const paramKey = (field, h) => `${fieldKey(field)} ${h}`;
 const layoutKey = (field, h, alpha) => `${paramKey(field, h)} ${alpha}`;
 
 function designField(shown, { align, sharp }, onProgress) {
-  Object.assign(shown, { paramKey: null, graphKey: null, graph: null, layoutKey: null });
+  Object.assign(shown, { paramKey: null, graphKey: null, graph: null, layoutKey: null, quadKey: null });
   shown.fieldKey = null;
   const result = shown.module.crossField({ align, sharp }, onProgress);
   shown.fieldKey = fieldKey({ align, sharp });
