@@ -1,0 +1,65 @@
+#include "quadopt/quad_input.h"
+
+#include <map>
+#include <utility>
+
+#include "base/error.h"
+
+namespace tessera::quadopt {
+namespace {
+
+constexpr std::size_t kFacesNamed = 5;
+
+}  // namespace
+
+void require_quad_mesh(const Mesh& mesh, const std::string& source) {
+  std::size_t triangles = 0, larger = 0;
+  std::string named;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const std::size_t n = mesh.face_size(f);
+    if (n == 4) continue;
+    (n == 3 ? triangles : larger) += 1;
+    if (triangles + larger <= kFacesNamed)
+      named += (named.empty() ? "" : ", ") + std::string("face ") + std::to_string(f) + " (" +
+               std::to_string(n) + " corners, at vertex " + std::to_string(mesh.face(f)[0]) + ")";
+  }
+  if (triangles + larger == 0) return;
+  throw TopologyError(source + ": " + std::to_string(triangles + larger) + " of " +
+                      std::to_string(mesh.face_count()) + " faces are not quads (" +
+                      std::to_string(triangles) + " triangles, " + std::to_string(larger) +
+                      " polygons with more than four corners; first " + named +
+                      "; faces count from 0): quad-mesh optimization needs a pure quad mesh; "
+                      "--split splits every face into quads first");
+}
+
+Mesh split_into_quads(const Mesh& mesh) {
+  Mesh result;
+  result.positions = mesh.positions;
+  std::map<std::pair<Index, Index>, Index> midpoint;
+  const auto midpoint_of = [&](Index a, Index b) {
+    const std::pair<Index, Index> key{std::min(a, b), std::max(a, b)};
+    auto [it, added] = midpoint.emplace(key, kNoIndex);
+    if (added) it->second = result.add_vertex(0.5 * (mesh.positions[a] + mesh.positions[b]));
+    return it->second;
+  };
+  std::vector<Index> parent;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const std::span<const Index> face = mesh.face(f);
+    const std::size_t n = face.size();
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (Index v : face) centroid += mesh.positions[v];
+    const Index centre = result.add_vertex(centroid / double(n));
+    for (std::size_t k = 0; k < n; ++k) {
+      const Index before = face[(k + n - 1) % n], here = face[k], after = face[(k + 1) % n];
+      result.add_face({here, midpoint_of(here, after), centre, midpoint_of(before, here)});
+      parent.push_back(static_cast<Index>(f));
+    }
+  }
+  for (const auto& [name, values] : mesh.face_attributes) {
+    std::vector<std::int32_t>& copied = result.face_attributes[name];
+    for (Index f : parent) copied.push_back(values[f]);
+  }
+  return result;
+}
+
+}  // namespace tessera::quadopt
