@@ -6,6 +6,7 @@
 #include "layout/arcs.h"
 #include "layout/conflicts.h"
 #include "layout/twin_edges.h"
+#include "quadopt/repair.h"
 
 namespace tessera::quadopt {
 namespace {
@@ -48,6 +49,7 @@ QuadGraph build_quad_graph(Mesh quads, const SupergraphOptions& options, const P
   lg.twin_edges = layout::merge_twin_edges(lg.graph, lg.arcs);
   seconds.push_back({"supergraph", seconds_since(start)});
   lg.graph.conflicts = layout::illegal_crossings(charts, lg.graph, lg.arcs, progress);
+  lg.repair_pairs = quad_repair_pairs;
   seconds.push_back({"conflicts", seconds_since(start)});
   return g;
 }
