@@ -15,13 +15,13 @@ namespace {
 using quadopt::QuadGraph;
 using quadopt::QuadLayoutResult;
 
-// A torus grid of 24 x 12 quads (vertex (i, j) is 12 i + j) with the edge from (i, j) to
-// (i + 1, j) rotated at each given i, j: every rotation plants two valence-3 and two valence-5
-// vertices side by side.
-Mesh torus_with_rotated_edges(const std::vector<std::pair<int, int>>& at) {
-  Mesh torus = quad_torus(3, 1, 24, 12);
+// A torus grid of n x m quads (vertex (i, j) is m i + j; 24 x 12 unless given) with the edge
+// from (i, j) to (i + 1, j) rotated at each given i, j: every rotation plants two valence-3 and
+// two valence-5 vertices side by side.
+Mesh torus_with_rotated_edges(const std::vector<std::pair<int, int>>& at, int n = 24, int m = 12) {
+  Mesh torus = quad_torus(3, 1, n, m);
   for (const auto& [i, j] : at)
-    test::rotate_quad_edge(torus, Index(12 * i + j), Index(12 * (i + 1) + j));
+    test::rotate_quad_edge(torus, Index(m * i + j), Index(m * (i + 1) + j));
   return torus;
 }
 
@@ -62,6 +62,11 @@ TEST(QuadoptLayout, NearMissOnATorusIsClosedToTheCornerCountBound) {
   EXPECT_EQ(r.check.patch_count, 8u);
   EXPECT_EQ(r.layout.check.patch_count, 8u);  // on the refined triangles as well
   EXPECT_GT(r.cut_quads, 0u);                 // the near misses are closed by slanted arcs
+  // GLPK's plain model of P1 (the reference) agrees.
+  const QuadLayoutResult reference =
+      quadopt::optimize_quad_layout(graph, 0, matching::SolverKind::glpk, Limits(), Progress());
+  EXPECT_NEAR(reference.layout.matching.objective, r.layout.matching.objective, 1e-6);
+  EXPECT_EQ(reference.check.patch_count, 8u);
 }
 
 TEST(QuadoptLayout, AlignedClustersAreJoinedAlongTheirOwnLines) {
@@ -150,6 +155,22 @@ TEST(QuadoptLayout, LayoutOverQuadsKeepsTheQuadsNoArcCuts) {
   const std::vector<std::int32_t>& quad_of = r.mesh.face_attributes.at("quad");
   EXPECT_EQ(quad_of.size(), r.mesh.face_count());
   EXPECT_EQ(r.check.patch_count, r.layout.check.patch_count);
+}
+
+// 20,480 quads with eight clusters (32 irregular vertices): the figures of this run, as a
+// regression; the bound of the corner count is 32 patches.
+TEST(QuadoptLayout, TwentyThousandQuadsWithEightClusters) {
+  const QuadGraph graph = graph_of(torus_with_rotated_edges(
+      {{10, 5}, {37, 90}, {71, 33}, {95, 120}, {120, 64}, {140, 10}, {20, 70}, {150, 100}}, 160,
+      128));
+  EXPECT_EQ(graph.quads.face_count(), 20480u);
+  EXPECT_EQ(graph.base.patch_count, 384u);
+  const QuadLayoutResult r5 = optimize(graph, 5);
+  EXPECT_TRUE(r5.check.valid()) << first_problem(r5);
+  EXPECT_EQ(r5.check.patch_count, 104u);
+  const QuadLayoutResult r0 = optimize(graph, 0);
+  EXPECT_TRUE(r0.check.valid()) << first_problem(r0);
+  EXPECT_EQ(r0.check.patch_count, 48u);
 }
 
 TEST(QuadoptLayout, GridTorusWithoutIrregularVertexIsRefused) {

@@ -170,17 +170,9 @@ class Builder {
     PortGraph& graph = result_.graph;
     const Index far = graph.ports.neighbour(height, side);
     if (far == kNoIndex || far == base) return;
-    GraphEdge edge;
-    edge.kind = EdgeKind::crossing;
-    edge.u = base;
-    edge.v = far;
-    edge.base_line = base;
-    edge.height_line = height;
-    edge.base = base_length;
-    edge.height = height_length;
-    edge.side = side;
     const Index index = static_cast<Index>(graph.edges.size());
-    graph.edges.push_back(edge);
+    graph.edges.push_back(
+        layout::crossing_edge(base, far, height, base_length, height_length, side));
     ++result_.crossing_edges;
     if (base_length != height_length) return;
     // Case 3: the other line's edge at the same crossing makes the zero-area pair.
