@@ -84,6 +84,9 @@ def main():
     ]
     for model, s, b, after, rsd, seconds in THESIS_TABLE_7_1:
         lines.append(f"| {model} | {s} | {b:,} | {after} | {b / after:.1f}x | {rsd} | {seconds} |")
+    load = os.getloadavg()
+    lines += ["", f"Load average of the machine ({os.cpu_count()} cores) when the runs ended: "
+              f"{load[0]:.1f} (1 min), {load[1]:.1f} (5 min); the seconds grow with it."]
     os.makedirs(os.path.dirname(args.report), exist_ok=True)
     with open(args.report, "w") as f:
         f.write("\n".join(lines) + "\n")
