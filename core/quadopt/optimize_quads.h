@@ -8,7 +8,10 @@
 //     layout stage's rounds, the mesh cut along the chosen arcs, the check, the angle RSD; and the
 //     layout over the quad mesh itself: every quad no arc crosses keeps its patch as a quad, the
 //     quads an arc cuts through (the arcs of edges of height > 0 are diagonal in the grid) are
-//     given as the refined triangles, so that every arc runs along edges of the result.
+//     given as the refined triangles, so that every arc runs along edges of the result. (Giving
+//     every cut quad to the patch covering most of it instead, so that the arcs become staircases
+//     of quad edges, broke the layout on all six shared quad meshes: patches a quad wide pinch at
+//     a vertex, and a crossing of two arcs inside a quad leaves corners off the nodes.)
 //
 // In:  a pure quad mesh (quad_input.h) that validate_mesh() accepted, options.
 // Out: plain values. Throws InputError for a mesh without irregular vertices (no separatrices:

@@ -24,12 +24,20 @@ void require_quad_mesh(const Mesh& mesh, const std::string& source) {
                std::to_string(n) + " corners, at vertex " + std::to_string(mesh.face(f)[0]) + ")";
   }
   if (triangles + larger == 0) return;
+  // glTF and STL hold triangles only: a quad mesh saved in them arrives as a triangle mesh.
+  const std::string all_triangles =
+      triangles == mesh.face_count()
+          ? " Every face is a triangle: this is a triangle mesh (glTF/GLB and STL files hold "
+            "triangles only; save the quad mesh as OBJ, OFF or PLY), and 'tessera layout' makes "
+            "quad layouts of triangle meshes."
+          : "";
   throw TopologyError(source + ": " + std::to_string(triangles + larger) + " of " +
                       std::to_string(mesh.face_count()) + " faces are not quads (" +
                       std::to_string(triangles) + " triangles, " + std::to_string(larger) +
                       " polygons with more than four corners; first " + named +
                       "; faces count from 0): quad-mesh optimization needs a pure quad mesh; "
-                      "--split splits every face into quads first");
+                      "--split splits every face into quads first." +
+                      all_triangles);
 }
 
 Mesh split_into_quads(const Mesh& mesh) {
