@@ -9,6 +9,7 @@
 #include "mesh_input.h"
 #include "quadopt/quad_input.h"
 #include "quadopt/quadopt_json.h"
+#include "remesh/remesh.h"
 #include "stderr_progress.h"
 
 namespace tessera::cli {
@@ -38,13 +39,18 @@ void print_optimize_quads_help() {
       "                       that no arc cuts is kept, the quads an arc crosses diagonally are\n"
       "                       split along it into triangles; integer face properties 'patch' and\n"
       "                       'quad' (the input quad of each face) in PLY\n"
+      "  --remesh FILE        also a new all-quad mesh whose base complex is the optimized\n"
+      "                       layout (thesis Ch. 8 at one quad per parameter unit: about the\n"
+      "                       input's resolution), with the face attribute 'patch'; its arcs\n"
+      "                       run along its edges, and its irregular vertices are the input's\n"
       "  --json               one JSON object on stdout: singularities, base_complex_patches,\n"
       "                       patches, angle_rsd, graph_edges, conflicts, matching_status,\n"
       "                       seconds, and quads, valid, base_complex_valid, objective,\n"
       "                       lower_bound, matching_stopped_by, alpha, diagonals, ports,\n"
       "                       virtual_ports, separatrix_edges, crossing_edges, diagonal_edges,\n"
       "                       zero_area_pairs, rejected_by_window, curved_edges, twin_edges,\n"
-      "                       cut_quads, rounds, p1_nodes, problems, problem_count\n"
+      "                       cut_quads, rounds, p1_nodes, problems, problem_count; with\n"
+      "                       --remesh also remeshed_quads, remeshed_irregular_vertices\n"
       "%s\n"
       "Exit codes: 0 ok (also for a layout the checker rejects: 'valid' says so), 1 internal\n"
       "error, 2 bad input (the message says what and where).\n",
@@ -78,7 +84,8 @@ std::string optimize_quads_text(const nlohmann::ordered_json& json) {
 
 int optimize_quads_command(const Args& args) {
   std::set<std::string> values = mesh_input_options();
-  values.insert({"--alpha", "--solver", "--max-solve-nodes", "--max-solve-seconds", "-o"});
+  values.insert(
+      {"--alpha", "--solver", "--max-solve-nodes", "--max-solve-seconds", "-o", "--remesh"});
   const ParsedArgs parsed = parse_args(
       args, values, {"--json", "--no-diagonals", "--split", "--help", "-h"}, "optimize-quads");
   if (parsed.has("--help") || parsed.has("-h")) {
@@ -89,6 +96,7 @@ int optimize_quads_command(const Args& args) {
     throw UsageError(
         "'tessera optimize-quads' takes one quad mesh file; run 'tessera optimize-quads --help'");
   if (parsed.has("-o")) check_mesh_format(parsed.value("-o"));
+  if (parsed.has("--remesh")) check_mesh_format(parsed.value("--remesh"));
   const double alpha = layout_alpha(parsed);
   const matching::SolverKind solver = layout_solver(parsed);
   const Limits limits = layout_options(parsed).limits;
@@ -110,7 +118,19 @@ int optimize_quads_command(const Args& args) {
   const quadopt::QuadLayoutResult result =
       quadopt::optimize_quad_layout(graph, alpha, solver, limits, progress);
   if (parsed.has("-o")) write_mesh_file(parsed.value("-o"), result.mesh);
-  const nlohmann::ordered_json json = quadopt::quad_layout_json(graph, result, options.diagonals);
+  nlohmann::ordered_json json = quadopt::quad_layout_json(graph, result, options.diagonals);
+  if (parsed.has("--remesh")) {
+    if (!result.check.valid())
+      throw InputError("the optimized layout is not valid (" + json["problems"][0].dump() +
+                       "): there is no quad mesh to write; try another --alpha");
+    // Ch. 8 with one parameter unit per quad edge: the input's resolution.
+    const remesh::QuadMesh remeshed = remesh::remesh_layout(result.layout, remesh::SizeTarget());
+    write_mesh_file(parsed.value("--remesh"), remeshed.mesh);
+    for (const layout::StageSeconds& stage : remeshed.seconds)
+      json["seconds"]["remesh " + stage.stage] = stage.seconds;
+    json["remeshed_quads"] = remeshed.mesh.face_count();
+    json["remeshed_irregular_vertices"] = remeshed.quality.irregular_vertices;
+  }
   std::printf("%s", parsed.has("--json") ? (json.dump(2) + "\n").c_str()
                                          : optimize_quads_text(json).c_str());
   return 0;

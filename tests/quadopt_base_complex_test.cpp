@@ -1,9 +1,13 @@
 // The trivial base complex B of quad meshes built in code (thesis Sec. 7.2) and the input checks.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <utility>
+
 #include "base/error.h"
 #include "mesh/connectivity.h"
 #include "mesh/shapes.h"
+#include "param/poisson.h"
 #include "quadopt/base_complex.h"
 #include "quadopt/integer_charts.h"
 #include "quadopt/quad_input.h"
@@ -54,6 +58,44 @@ TEST(QuadoptBaseComplex, TorusWithRotatedEdge) {
   EXPECT_TRUE(b.check.valid()) << (b.check.problems.empty() ? "" : b.check.problems[0]);
   EXPECT_EQ(b.lines.size(), 16u);
   EXPECT_EQ(b.patch_count, 6u);
+}
+
+// The indices (4 - valence) / 4 inside and (2 - valence) / 4 on the boundary sum to the Euler
+// characteristic (Poincare-Hopf in the integer metric, Sec. 7.2).
+TEST(QuadoptBaseComplex, IrregularVerticesSumToTheEulerCharacteristic) {
+  Mesh grid = test::flat_quad_grid(8, 8);
+  test::rotate_quad_edge(grid, 4 * 9 + 4, 5 * 9 + 4);
+  Mesh torus = quad_torus(3, 1, 24, 12);
+  test::rotate_quad_edge(torus, 5 * 12 + 4, 6 * 12 + 4);
+  for (const auto& [mesh, chi] : {std::pair{grid, 1.0}, std::pair{torus, 0.0}}) {
+    double sum = 0;
+    for (const Singularity& s : quadopt::irregular_vertices(mesh, build_connectivity(mesh)))
+      sum += s.index;
+    EXPECT_DOUBLE_EQ(sum, chi);
+  }
+}
+
+// Every transition of the integer charts maps the shared edge onto itself with an integer
+// translation (Sec. 7.1: the charts are unit squares, the metric counts edges).
+TEST(QuadoptBaseComplex, IntegerChartsAgreeAcrossEveryEdge) {
+  Mesh torus = quad_torus(3, 1, 24, 12);
+  test::rotate_quad_edge(torus, 5 * 12 + 4, 6 * 12 + 4);
+  const quadopt::IntegerCharts charts = quadopt::integer_charts(torus, build_connectivity(torus));
+  const Connectivity& c = charts.connectivity;
+  const SeamlessParam& p = charts.param;
+  for (Index h = 0; h < c.corner_count; ++h) {
+    const Index t = c.twin[h];
+    const Eigen::Vector2d& t_h = p.translation[h];
+    EXPECT_EQ(t_h.x(), std::round(t_h.x()));
+    EXPECT_EQ(t_h.y(), std::round(t_h.y()));
+    // uv in face(t) = J^r uv in face(h) + t_h, at both ends of the edge.
+    const auto image = [&](Index corner) -> Eigen::Vector2d {
+      return quarter_turns(p.uv[corner], p.rotation[h]) + t_h;
+    };
+    EXPECT_LT((image(h) - p.uv[c.next[t]]).norm(), 1e-12);
+    EXPECT_LT((image(c.next[h]) - p.uv[t]).norm(), 1e-12);
+  }
+  EXPECT_EQ(p.singularities.size(), 4u);
 }
 
 TEST(QuadoptInput, TrianglesAreCountedAndNamed) {

@@ -5,9 +5,11 @@
 
 #include "cli_run.h"
 #include "export/writers.h"
+#include "mesh/connectivity.h"
 #include "mesh/readers.h"
 #include "mesh/shapes.h"
 #include "mesh_test_util.h"
+#include "quadopt/base_complex.h"
 #include "quadopt_test_util.h"
 
 namespace tessera {
@@ -40,6 +42,23 @@ TEST(QuadoptCli, JsonHasTheKeysOfIssue40AndThePlyItsPatches) {
   const std::vector<std::int32_t>& patch = written.face_attributes.at("patch");
   ASSERT_EQ(patch.size(), written.face_count());
   EXPECT_EQ(*std::max_element(patch.begin(), patch.end()), 7);
+}
+
+// The optimized layout as a quad mesh of its own (Ch. 8): its trivial base complex is the layout.
+TEST(QuadoptCli, RemeshedQuadMeshHasTheOptimizedLayoutAsItsBaseComplex) {
+  const std::string in = torus_file("torus.obj");
+  const std::string out = test::temp_path("remeshed.obj");
+  const test::CliResult r = test::run_cli("optimize-quads " + test::quoted(in) +
+                                          " --alpha 0 --json --remesh " + test::quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json["patches"], 8);
+  EXPECT_EQ(json["remeshed_irregular_vertices"], 8);
+  const Mesh remeshed = read_obj(read_file_bytes(out, Limits()), out, Limits());
+  const quadopt::BaseComplex b =
+      quadopt::trivial_base_complex(remeshed, build_connectivity(remeshed));
+  EXPECT_EQ(b.patch_count, 8u);
+  EXPECT_TRUE(b.check.valid());
 }
 
 TEST(QuadoptCli, NoDiagonalsIsReported) {
