@@ -32,6 +32,8 @@ void print_optimize_quads_help() {
       "  --split              split every face into quads first (a triangle or n-gon into 3 or n\n"
       "                       quads, all other faces into 4 to keep the mesh conforming); without\n"
       "                       it a mesh with faces that are not quads is refused\n"
+      "  --join-triangles     a quad mesh saved as triangles (GLB, STL: each quad's two triangles\n"
+      "                       one after the other) joined back into its quads\n"
       "  --solver S           P1 solver: exact (default), glpk or glpk-tuned\n"
       "  --max-solve-nodes N  branch-and-bound nodes of P1 with its rounds (default 5000)\n"
       "  --max-solve-seconds S  time guard of P1 (default 1800)\n"
@@ -87,7 +89,8 @@ int optimize_quads_command(const Args& args) {
   values.insert(
       {"--alpha", "--solver", "--max-solve-nodes", "--max-solve-seconds", "-o", "--remesh"});
   const ParsedArgs parsed = parse_args(
-      args, values, {"--json", "--no-diagonals", "--split", "--help", "-h"}, "optimize-quads");
+      args, values, {"--json", "--no-diagonals", "--split", "--join-triangles", "--help", "-h"},
+      "optimize-quads");
   if (parsed.has("--help") || parsed.has("-h")) {
     print_optimize_quads_help();
     return 0;
@@ -107,8 +110,14 @@ int optimize_quads_command(const Args& args) {
   LoadedMesh loaded = load_mesh_argument(path, parsed);
   for (const std::string& warning : loaded.report.warnings)
     std::fprintf(stderr, "tessera: warning: %s\n", warning.c_str());
+  if (parsed.has("--split") && parsed.has("--join-triangles"))
+    throw UsageError("give one of --split and --join-triangles");
   if (parsed.has("--split")) {
     loaded.mesh = quadopt::split_into_quads(loaded.mesh);
+  } else if (parsed.has("--join-triangles")) {
+    loaded.mesh = quadopt::join_triangle_pairs(loaded.mesh, path);
+    validate_mesh(loaded.mesh);
+    quadopt::require_quad_mesh(loaded.mesh, path);
   } else {
     quadopt::require_quad_mesh(loaded.mesh, path);
   }

@@ -90,6 +90,23 @@ TEST(QuadoptCli, TrianglesAreRefusedWithWhereAndSplitOnRequest) {
   EXPECT_EQ(json["valid"], true);
 }
 
+// glTF holds triangles only: a quad mesh converted to GLB comes back as its quads.
+TEST(QuadoptCli, GlbOfAQuadMeshIsJoinedBackIntoQuads) {
+  const std::string in = torus_file("torus.obj");
+  const std::string glb = test::temp_path("torus.glb");
+  ASSERT_EQ(test::run_cli("convert " + test::quoted(in) + " " + test::quoted(glb)).exit_code, 0);
+  const test::CliResult refused = test::run_cli("optimize-quads " + test::quoted(glb), true);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.out.find("--join-triangles"), std::string::npos) << refused.out;
+  const test::CliResult r =
+      test::run_cli("optimize-quads " + test::quoted(glb) + " --join-triangles --alpha 0 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json["quads"], 24 * 12);
+  EXPECT_EQ(json["base_complex_patches"], 16);
+  EXPECT_EQ(json["patches"], 8);
+}
+
 TEST(QuadoptCli, BadInputExitsWithTwo) {
   EXPECT_EQ(test::run_cli("optimize-quads").exit_code, 2);
   EXPECT_EQ(test::run_cli("optimize-quads /nonexistent/quads.obj").exit_code, 2);

@@ -27,9 +27,10 @@ void require_quad_mesh(const Mesh& mesh, const std::string& source) {
   // glTF and STL hold triangles only: a quad mesh saved in them arrives as a triangle mesh.
   const std::string all_triangles =
       triangles == mesh.face_count()
-          ? " Every face is a triangle: this is a triangle mesh (glTF/GLB and STL files hold "
-            "triangles only; save the quad mesh as OBJ, OFF or PLY), and 'tessera layout' makes "
-            "quad layouts of triangle meshes."
+          ? " Every face is a triangle: glTF/GLB and STL files hold triangles only, "
+            "--join-triangles joins a quad mesh saved so (each quad's two triangles one after "
+            "the other) back into quads; a triangle mesh gets its quad layout from 'tessera "
+            "layout'."
           : "";
   throw TopologyError(source + ": " + std::to_string(triangles + larger) + " of " +
                       std::to_string(mesh.face_count()) + " faces are not quads (" +
@@ -66,6 +67,41 @@ Mesh split_into_quads(const Mesh& mesh) {
   for (const auto& [name, values] : mesh.face_attributes) {
     std::vector<std::int32_t>& copied = result.face_attributes[name];
     for (Index f : parent) copied.push_back(values[f]);
+  }
+  return result;
+}
+
+Mesh join_triangle_pairs(const Mesh& mesh, const std::string& source) {
+  const auto refuse = [&](std::size_t f, const std::string& why) {
+    return TopologyError(source + ": faces " + std::to_string(f) + " and " + std::to_string(f + 1) +
+                         " are not the two triangles of one quad (" + why +
+                         "); --join-triangles wants a quad mesh saved as triangles, each quad's "
+                         "two halves one after the other");
+  };
+  if (mesh.face_count() % 2 != 0)
+    throw TopologyError(source + ": an odd number of faces (" + std::to_string(mesh.face_count()) +
+                        ") cannot pair into quads");
+  Mesh result;
+  result.positions = mesh.positions;
+  for (std::size_t f = 0; f < mesh.face_count(); f += 2) {
+    if (mesh.face_size(f) != 3 || mesh.face_size(f + 1) != 3) throw refuse(f, "not triangles");
+    const std::span<const Index> a = mesh.face(f), b = mesh.face(f + 1);
+    bool joined = false;
+    // a = (x, y, p) and b = (y, x, q) tile the quad (y, p, x, q).
+    for (std::size_t i = 0; i < 3 && !joined; ++i)
+      for (std::size_t j = 0; j < 3 && !joined; ++j) {
+        const Index x = a[i], y = a[(i + 1) % 3], p = a[(i + 2) % 3];
+        if (b[j] != y || b[(j + 1) % 3] != x) continue;
+        const Index q = b[(j + 2) % 3];
+        if (q == p) throw refuse(f, "the same triangle twice");
+        result.add_face({y, p, x, q});
+        joined = true;
+      }
+    if (!joined) throw refuse(f, "they share no edge");
+  }
+  for (const auto& [name, values] : mesh.face_attributes) {
+    std::vector<std::int32_t>& kept = result.face_attributes[name];
+    for (std::size_t f = 0; f < values.size(); f += 2) kept.push_back(values[f]);
   }
   return result;
 }
