@@ -135,6 +135,24 @@ TEST(QuadoptLayout, FlatGridWithARotatedEdgeUsesVirtualPorts) {
   }
 }
 
+// An L of 8 x 8 quads without its 4 x 4 corner: the concave corner (three quads on the boundary)
+// sends two lines to the boundary, which P1 must keep (each port once; no other port to match):
+// three rectangles, before and after.
+TEST(QuadoptLayout, ConcaveBoundaryCornerKeepsItsTwoLines) {
+  Mesh l_shape = test::flat_quad_grid(8, 8, [](int i, int j) { return i >= 4 && j >= 4; });
+  remove_unreferenced_vertices(l_shape);
+  const QuadGraph graph = graph_of(l_shape);
+  const layout::PortGraph& g = graph.layout_graph.graph;
+  EXPECT_EQ(graph.charts.param.singularities.size(), 6u);  // five convex corners, one concave
+  EXPECT_EQ(g.port_count(), 2u);
+  EXPECT_EQ(g.virtual_ports.size(), 2u);
+  EXPECT_EQ(graph.base.patch_count, 3u);
+  const QuadLayoutResult r = optimize(graph, 5);
+  EXPECT_TRUE(r.check.valid()) << first_problem(r);
+  EXPECT_EQ(r.check.patch_count, 3u);
+  EXPECT_EQ(r.cut_quads, 0u);
+}
+
 TEST(QuadoptLayout, FlatGridIsOnePatch) {
   const QuadGraph graph = graph_of(test::flat_quad_grid(4, 6));
   const QuadLayoutResult r = optimize(graph, 5);

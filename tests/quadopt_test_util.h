@@ -11,16 +11,22 @@
 namespace tessera::test {
 
 // A flat n x m grid of unit quads in the plane z = 0, counterclockwise seen from +z; vertex
-// (i, j) is i * (m + 1) + j.
-inline Mesh flat_quad_grid(int n, int m) {
+// (i, j) is i * (m + 1) + j. The quads (i, j) for which `skip` is true are left out (the vertices
+// stay; only those of some quad count once the mesh is validated).
+template <typename Skip>
+Mesh flat_quad_grid(int n, int m, Skip skip) {
   Mesh mesh;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= m; ++j) mesh.add_vertex({double(i), double(j), 0.0});
   const auto at = [m](int i, int j) { return static_cast<Index>(i * (m + 1) + j); };
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < m; ++j)
-      mesh.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      if (!skip(i, j)) mesh.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
   return mesh;
+}
+
+inline Mesh flat_quad_grid(int n, int m) {
+  return flat_quad_grid(n, m, [](int, int) { return false; });
 }
 
 // Rotates the edge a-b shared by two quads (a, b, c, d) and (b, a, e, f) into the edge d-f: a and
