@@ -5,7 +5,8 @@
 // one rotated edge (two valence-3 and two valence-5 vertices side by side), alpha 0 takes the
 // diagonal edges inside the cluster and three loops around the torus, and three of its four
 // patches are annuli. The layout stage's loop_pairs() (layout/conflicts.h) sees loops with two
-// convex corners only; this adds, for every patch that is no disk with four corners, the pairs of
+// convex corners only; this adds, for every patch the check faults (no disk, not four corners,
+// touching itself at a vertex), the pairs of
 // chosen edges near it of which one at least is no separatrix of B (an edge made at a crossing).
 // B itself (Sec. 7.2) is a valid layout and meets none of these pairs, so P1 stays feasible, and
 // each round rules out the matching that failed.
