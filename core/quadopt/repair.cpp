@@ -96,20 +96,25 @@ std::vector<Index> edges_that_took_cuts(const layout::Charts& charts,
 std::vector<layout::EdgePair> quad_repair_pairs(const layout::Charts& charts,
                                                 const layout::PortGraph& graph,
                                                 const layout::QuadLayout& failed) {
-  std::vector<layout::EdgePair> pairs = layout::loop_pairs(charts, graph, failed.arcs);
+  std::vector<layout::EdgePair> pairs;
   const auto add = [&](Index a, Index b) {
     const layout::GraphEdge &ea = graph.edges[a], &eb = graph.edges[b];
     if (a == b || share_a_node(ea, eb)) return;
     if (ea.kind != layout::EdgeKind::crossing && eb.kind != layout::EdgeKind::crossing) return;
     pairs.push_back({std::min(a, b), std::max(a, b)});
   };
+  // Two separatrices of B may well close a loop (a helix, Fig. 7.3): B keeps them.
+  for (const layout::EdgePair& pair : layout::loop_pairs(charts, graph, failed.arcs))
+    add(pair.first, pair.second);
   if (failed.check.corners.size() == failed.check.patch_count) {  // the patch ids cover the faces
     const FaultyPatches faulty = faulty_patches(charts, failed);
     for (std::size_t k = 0; k < faulty.arcs.size(); ++k) {
       std::vector<Index> near;
       for (std::size_t position : faulty.arcs[k]) near.push_back(failed.matching.edges[position]);
+      const std::size_t before = pairs.size();
       for (std::size_t i = 0; i < near.size(); ++i)
         for (std::size_t j = i + 1; j < near.size(); ++j) add(near[i], near[j]);
+      if (pairs.size() > before) continue;
       for (Index taker : edges_that_took_cuts(charts, graph, failed, faulty.faces[k]))
         for (Index e : near) add(taker, e);
     }

@@ -7,12 +7,16 @@
 // patches are annuli. The layout stage's loop_pairs() (layout/conflicts.h) sees loops with two
 // convex corners only; this adds, for every patch the check faults (no disk, not four corners,
 // touching itself at a vertex), the pairs of
-// chosen edges near it of which one at least is no separatrix of B (an edge made at a crossing).
+// chosen edges near it of which one at least is no separatrix of B (an edge made at a crossing);
+// a faulty patch that gives no such pair (an annulus around a handle bounded by separatrices of B:
+// fertility_qf20k at alpha 0) pairs its edges with the crossing edges that took the ports of B's
+// separatrices through it.
 // B itself (Sec. 7.2) is a valid layout and meets none of these pairs, so P1 stays feasible, and
 // each round rules out the matching that failed.
 //
-// In:  the charts, the graph, the failed round's layout. Out: loop_pairs() and these pairs,
-//      sorted, without repeats and without pairs of edges that share a port.
+// In:  the charts, the graph, the failed round's layout. Out: loop_pairs() and these pairs, those
+//      of two separatrices of B left out, sorted, without repeats and without pairs of edges that
+//      share a port.
 #pragma once
 
 #include <vector>
