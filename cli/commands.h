@@ -19,5 +19,6 @@ int solve_command(const Args& args);
 int reduce_command(const Args& args);
 int layout_command(const Args& args);
 int remesh_command(const Args& args);
+int optimize_quads_command(const Args& args);
 
 }  // namespace tessera::cli

@@ -27,11 +27,13 @@ constexpr Command kCommands[] = {
     {"reduce", tessera::cli::reduce_command, "program P1 without the edges a bound rules out"},
     {"layout", tessera::cli::layout_command, "quad layout by a perfect matching of the ports"},
     {"remesh", tessera::cli::remesh_command, "a quad mesh from the quad layout (Ch. 8)"},
+    {"optimize-quads", tessera::cli::optimize_quads_command,
+     "a coarser base complex of a quad mesh (Ch. 7)"},
 };
 
 void print_help() {
   std::printf("tessera: quad layouts and regular maps\n\nusage: tessera <command> [options]\n\n");
-  for (const Command& c : kCommands) std::printf("  %-10s %s\n", c.name, c.summary);
+  for (const Command& c : kCommands) std::printf("  %-14s %s\n", c.name, c.summary);
   std::printf(
       "\n'tessera <command> --help' tells more. Exit codes: 0 ok, 1 internal error, "
       "2 bad input or usage.\n");

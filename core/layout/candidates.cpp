@@ -43,16 +43,7 @@ Index EdgeCollector::try_edge(PortGraph& graph, Index base, double base_length,
   window = angle;
   const Index other = graph.ports.neighbour(height, side);
   if (other == kNoIndex || other == base) return kNoIndex;
-  GraphEdge edge;
-  edge.kind = EdgeKind::crossing;
-  edge.u = base;
-  edge.v = other;
-  edge.base_line = base;
-  edge.height_line = height;
-  edge.base = base_length;
-  edge.height = height_length;
-  edge.side = side;
-  graph.edges.push_back(edge);
+  graph.edges.push_back(crossing_edge(base, other, height, base_length, height_length, side));
   return static_cast<Index>(graph.edges.size() - 1);
 }
 

@@ -37,10 +37,20 @@ class Checker {
     result_.corners.resize(result_.patch_count);
     result_.neighbours.resize(result_.patch_count);
     for (std::int32_t p = 0; p < std::int32_t(result_.patch_count); ++p) check_patch(p, faces[p]);
+    std::vector<std::int32_t>& faulty = result_.faulty_patches;
+    std::sort(faulty.begin(), faulty.end());
+    faulty.erase(std::unique(faulty.begin(), faulty.end()), faulty.end());
     return std::move(result_);
   }
 
  private:
+  // A problem of patch p: p joins the faulty patches.
+  void patch_problem(std::int32_t p, const std::string& text) {
+    std::vector<std::int32_t>& faulty = result_.faulty_patches;
+    if (faulty.empty() || faulty.back() != p) faulty.push_back(p);
+    problem(text);
+  }
+
   void problem(const std::string& text) {
     if (result_.problems.size() < kProblemsKept) result_.problems.push_back(text);
     ++result_.problem_count;
@@ -107,8 +117,8 @@ class Checker {
       for (std::size_t k = 0; k + 1 < runs; ++k)
         if (run_sides[k] >= 0 && run_sides[k] == run_sides[k + 1] &&
             (k + 2 == runs || run_sides[k + 2] != run_sides[k]))
-          problem("patch " + std::to_string(run_sides[k]) + " touches itself at vertex " +
-                  std::to_string(v));
+          patch_problem(run_sides[k], "patch " + std::to_string(run_sides[k]) +
+                                          " touches itself at vertex " + std::to_string(v));
       bool node = runs >= 3;
       if (runs == 2 && c_.is_boundary_vertex(v)) node = boundary_corner[v] != 0;
       is_node_[v] = node;
@@ -189,9 +199,9 @@ class Checker {
     const long chi = walk.vertices - walk.edges + long(faces.size());
     const std::vector<std::vector<Index>> loops = boundary_loops(std::move(walk.starts), p);
     if (walk.pieces != 1 || chi != 1 || loops.size() != 1) {
-      problem(name + " is not a disk (" + std::to_string(walk.pieces) +
-              " pieces, Euler characteristic " + std::to_string(chi) + ", " +
-              std::to_string(loops.size()) + " boundary loops)");
+      patch_problem(p, name + " is not a disk (" + std::to_string(walk.pieces) +
+                           " pieces, Euler characteristic " + std::to_string(chi) + ", " +
+                           std::to_string(loops.size()) + " boundary loops)");
       return;
     }
     const std::vector<Index>& loop = loops.front();
@@ -201,8 +211,8 @@ class Checker {
     std::vector<Index>& corners = result_.corners[p];
     for (std::size_t k : at) corners.push_back(c_.from_vertex(loop[k]));
     if (corners.size() != 4) {
-      problem(name + " has " + std::to_string(corners.size()) + " corners (vertices " +
-              vertex_list(corners) + ")");
+      patch_problem(p, name + " has " + std::to_string(corners.size()) + " corners (vertices " +
+                           vertex_list(corners) + ")");
       return;
     }
     for (std::size_t k = 0; k < 4; ++k) {

@@ -39,7 +39,8 @@ struct LayoutCheck {
   std::vector<std::vector<Index>> corners;            // per patch, counterclockwise
   std::vector<std::vector<std::int32_t>> neighbours;  // per patch, across side k (corner k to k+1)
   std::vector<LayoutArc> arcs;
-  std::vector<std::string> problems;  // the first few, e.g. "patch 7 has 5 corners (...)"
+  std::vector<std::string> problems;         // the first few, e.g. "patch 7 has 5 corners (...)"
+  std::vector<std::int32_t> faulty_patches;  // every patch a problem names, increasing
   std::size_t problem_count = 0;
   bool valid() const { return problem_count == 0 && patch_count > 0; }
 };

@@ -83,6 +83,22 @@ struct GraphEdge {
   bool diagonal = false;  // case 3 of C1 (L_a = L_b): one of a zero-area pair
 };
 
+// The edge condition C1 makes at a crossing (Sec. 4.1): from the port of the base line to the port
+// `far` next to the height line's at its singularity.
+inline GraphEdge crossing_edge(Index base_line, Index far, Index height_line, double base,
+                               double height, int side) {
+  GraphEdge edge;
+  edge.kind = EdgeKind::crossing;
+  edge.u = base_line;
+  edge.v = far;
+  edge.base_line = base_line;
+  edge.height_line = height_line;
+  edge.base = base;
+  edge.height = height;
+  edge.side = side;
+  return edge;
+}
+
 // A virtual port (Sec. 4.4): where a separatrix leaves the surface.
 struct VirtualPort {
   Index line = 0;

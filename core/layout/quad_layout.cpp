@@ -177,9 +177,11 @@ QuadLayout solve_in_rounds(const Charts& charts, const LayoutGraph& graph, doubl
     if (laid_out) {
       lay_out(charts, graph, cache, clock, layout);
       if (layout.check.valid()) break;
-      failed =
-          cache.failed.emplace(layout.matching.edges, loop_pairs(charts, graph.graph, layout.arcs))
-              .first;
+      failed = cache.failed
+                   .emplace(layout.matching.edges,
+                            graph.repair_pairs ? graph.repair_pairs(charts, graph.graph, layout)
+                                               : loop_pairs(charts, graph.graph, layout.arcs))
+                   .first;
     }
     const std::vector<EdgePair>& pairs = failed->second;
     if (pairs.empty()) break;

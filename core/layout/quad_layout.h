@@ -47,6 +47,12 @@ struct StageSeconds {
   double seconds = 0;
 };
 
+struct QuadLayout;
+
+// The conflict pairs that a round whose layout failed the check adds to P1 for the next round.
+using RepairPairs = std::vector<EdgePair> (*)(const Charts& charts, const PortGraph& graph,
+                                              const QuadLayout& failed);
+
 struct LayoutGraph {
   PortGraph graph;
   std::vector<Arc> arcs;         // of every edge, in edge order
@@ -57,6 +63,9 @@ struct LayoutGraph {
   std::size_t trace_steps = 0;      // faces crossed by all separatrices (Limits::max_trace_steps)
   std::size_t trace_crossings = 0;  // crossings they found (Limits::max_trace_crossings)
   std::vector<StageSeconds> seconds;
+  // Null: loop_pairs() of the failed round's arcs (conflicts.h). A graph with more known about
+  // it sets its own (the supergraph of a quad mesh, Ch. 7).
+  RepairPairs repair_pairs = nullptr;
 };
 
 struct QuadLayout {
