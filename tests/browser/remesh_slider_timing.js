@@ -12,6 +12,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { launchBrowser, servePage } from './harness.js';
 import { idle, pickFiles } from './helpers.js';
+import { milliseconds, releaseSliderAt, summary } from './slider_timing_util.js';
 import { quadCountAt } from '../../web/src/ui/quad-mesh-figures.js';
 
 const [file, ...positionArgs] = process.argv.slice(2);
@@ -25,44 +26,10 @@ const TIMEOUT_MS = 600_000;
 const figure = (page, key) => page.locator(`[data-role=quad-mesh-figures] [data-figure=${key}]`).textContent();
 const shownCount = (count) => Number(count).toLocaleString('en-US');
 
-function milliseconds(text) {
-  const match = /^([\d.]+) (m?s)$/.exec(text.trim());
-  if (!match) throw new Error(`not a time: "${text}"`);
-  return Number(match[1]) * (match[2] === 'ms' ? 1 : 1000);
-}
-
 async function remeshed(page, target) {
   const exactly = new RegExp(`^${shownCount(target)}$`);
   await page.locator('[data-role=quad-mesh-figures] [data-figure=target]').filter({ hasText: exactly }).waitFor({ timeout: TIMEOUT_MS });
   await idle(page);
-}
-
-// In the page: the slider set to `position` and released. Resolves with the milliseconds until the
-// figures showed `target` and until the frame after it was drawn; null when it is shown already.
-function releaseSliderAt({ position, target }) {
-  const slider = document.querySelector('[data-role=quad-count]');
-  const figures = document.querySelector('[data-role=quad-mesh-figures]');
-  const shows = () => figures.querySelector('[data-figure=target]')?.textContent === target;
-  if (shows()) return null;
-  return new Promise((resolve) => {
-    const start = performance.now();
-    const observer = new MutationObserver(() => {
-      if (!shows()) return;
-      observer.disconnect();
-      const shown = performance.now() - start;
-      requestAnimationFrame(() => requestAnimationFrame(() => resolve({ shown, drawn: performance.now() - start })));
-    });
-    observer.observe(figures, { childList: true, subtree: true, characterData: true });
-    slider.value = String(position);
-    slider.dispatchEvent(new Event('input', { bubbles: true }));
-    slider.dispatchEvent(new Event('change', { bubbles: true }));
-  });
-}
-
-function summary(label, times) {
-  const sorted = [...times].sort((a, b) => a - b);
-  const slow = sorted.filter((t) => t >= 200).length;
-  return `${label}: median ${sorted[sorted.length >> 1].toFixed(0)} ms, largest ${sorted.at(-1).toFixed(0)} ms, ${slow} of ${sorted.length} at 200 ms or more`;
 }
 
 const { server, url } = await servePage();
@@ -92,7 +59,13 @@ try {
   const drawn = [];
   for (const position of positions) {
     const target = quadCountAt(position);
-    const times = await page.evaluate(releaseSliderAt, { position, target: shownCount(target) });
+    const times = await page.evaluate(releaseSliderAt, {
+      slider: 'quad-count',
+      figures: 'quad-mesh-figures',
+      key: 'target',
+      value: position,
+      shown: shownCount(target),
+    });
     if (!times) {
       console.log(`${String(position).padStart(9)}  ${String(target).padStart(6)}  already shown, skipped`);
       continue;
@@ -104,9 +77,9 @@ try {
     const columns = [worker, shown, drawn].map((list, k) => list.at(-1).toFixed(0).padStart([10, 15, 15][k]));
     console.log(`${String(position).padStart(9)}  ${String(target).padStart(6)}  ${(await figure(page, 'quads')).padStart(6)} ${columns.join(' ')}`);
   }
-  console.log(summary('remesh (worker)', worker));
-  console.log(summary('shown after (page)', shown));
-  console.log(summary('drawn after (page)', drawn));
+  console.log(summary('remesh (worker)', worker, 200));
+  console.log(summary('shown after (page)', shown, 200));
+  console.log(summary('drawn after (page)', drawn, 200));
 } finally {
   await browser.close();
   await new Promise((resolve) => server.httpServer.close(resolve));

@@ -13,6 +13,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { launchBrowser, servePage } from './harness.js';
 import { idle, pickFiles } from './helpers.js';
+import { milliseconds, releaseSliderAt, summary } from './slider_timing_util.js';
 
 const args = process.argv.slice(2);
 const waitAt = args.indexOf('--wait');
@@ -29,49 +30,12 @@ const LAYOUT_TIMEOUT_MS = 600_000;
 
 const figure = (page, key) => page.locator(`[data-role=layout-figures] [data-figure=${key}]`).textContent();
 
-/** Milliseconds from the page's "12 ms" / "1.2 s". */
-function milliseconds(text) {
-  const match = /^([\d.]+) (m?s)$/.exec(text.trim());
-  if (!match) throw new Error(`not a time: "${text}"`);
-  return Number(match[1]) * (match[2] === 'ms' ? 1 : 1000);
-}
-
 async function shownAlpha(page, alpha) {
   await page
     .locator('[data-role=layout-figures] [data-figure=alpha]')
     .filter({ hasText: new RegExp(`^${alpha}$`) })
     .waitFor({ timeout: LAYOUT_TIMEOUT_MS });
   await idle(page);
-}
-
-// In the page: the slider set to `alpha` and released (its input and change events). Resolves
-// with the milliseconds until the figures showed that alpha (the re-solve, the display data, the
-// messages) and until the frame after it was drawn; null when that alpha is already shown (no
-// re-solve).
-function releaseSliderAt(alpha) {
-  const slider = document.querySelector('[data-role=alpha]');
-  const figures = document.querySelector('[data-role=layout-figures]');
-  const shows = () => figures.querySelector('[data-figure=alpha]')?.textContent === alpha;
-  if (shows()) return null;
-  return new Promise((resolve) => {
-    const start = performance.now();
-    const observer = new MutationObserver(() => {
-      if (!shows()) return;
-      observer.disconnect();
-      const shown = performance.now() - start;
-      requestAnimationFrame(() => requestAnimationFrame(() => resolve({ shown, drawn: performance.now() - start })));
-    });
-    observer.observe(figures, { childList: true, subtree: true, characterData: true });
-    slider.value = alpha;
-    slider.dispatchEvent(new Event('input', { bubbles: true }));
-    slider.dispatchEvent(new Event('change', { bubbles: true }));
-  });
-}
-
-function summary(label, times) {
-  const sorted = [...times].sort((a, b) => a - b);
-  const slow = sorted.filter((t) => t >= 100).length;
-  return `${label}: median ${sorted[sorted.length >> 1].toFixed(0)} ms, largest ${sorted.at(-1).toFixed(0)} ms, ${slow} of ${sorted.length} at 100 ms or more`;
 }
 
 const { server, url } = await servePage();
@@ -96,7 +60,13 @@ try {
   const shown = [];
   const drawn = [];
   for (const alpha of alphas) {
-    const times = await page.evaluate(releaseSliderAt, String(alpha));
+    const times = await page.evaluate(releaseSliderAt, {
+      slider: 'alpha',
+      figures: 'layout-figures',
+      key: 'alpha',
+      value: alpha,
+      shown: String(alpha),
+    });
     if (!times) {
       console.log(`${String(alpha).padStart(6)}  already shown, skipped`);
       continue;
@@ -108,9 +78,9 @@ try {
     const columns = [worker, shown, drawn].map((list, k) => list.at(-1).toFixed(0).padStart([12, 15, 15][k]));
     console.log(`${String(alpha).padStart(6)} ${columns.join(' ')} ${(await figure(page, 'patches')).padStart(8)}  ${await figure(page, 'rounds')}`);
   }
-  console.log(summary('re-solve (worker)', worker));
-  console.log(summary('shown after (page)', shown));
-  console.log(summary('drawn after (page)', drawn));
+  console.log(summary('re-solve (worker)', worker, 100));
+  console.log(summary('shown after (page)', shown, 100));
+  console.log(summary('drawn after (page)', drawn, 100));
 } finally {
   await browser.close();
   await new Promise((resolve) => server.httpServer.close(resolve));
