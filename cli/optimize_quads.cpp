@@ -7,8 +7,8 @@
 #include "export/write_mesh.h"
 #include "layout_input.h"
 #include "mesh_input.h"
-#include "quadopt/quad_input.h"
-#include "quadopt/quadopt_json.h"
+#include "quadmesh/quad_input.h"
+#include "quadmesh/quadmesh_json.h"
 #include "remesh/remesh.h"
 #include "stderr_progress.h"
 
@@ -103,7 +103,7 @@ int optimize_quads_command(const Args& args) {
   const double alpha = layout_alpha(parsed);
   const matching::SolverKind solver = layout_solver(parsed);
   const Limits limits = layout_options(parsed).limits;
-  quadopt::SupergraphOptions options;
+  quadmesh::SupergraphOptions options;
   options.diagonals = !parsed.has("--no-diagonals");
 
   const std::string& path = parsed.positional[0];
@@ -113,21 +113,21 @@ int optimize_quads_command(const Args& args) {
   if (parsed.has("--split") && parsed.has("--join-triangles"))
     throw UsageError("give one of --split and --join-triangles");
   if (parsed.has("--split")) {
-    loaded.mesh = quadopt::split_into_quads(loaded.mesh);
+    loaded.mesh = quadmesh::split_into_quads(loaded.mesh);
   } else if (parsed.has("--join-triangles")) {
-    loaded.mesh = quadopt::join_triangle_pairs(loaded.mesh, path);
+    loaded.mesh = quadmesh::join_triangle_pairs(loaded.mesh, path);
     validate_mesh(loaded.mesh);
-    quadopt::require_quad_mesh(loaded.mesh, path);
+    quadmesh::require_quad_mesh(loaded.mesh, path);
   } else {
-    quadopt::require_quad_mesh(loaded.mesh, path);
+    quadmesh::require_quad_mesh(loaded.mesh, path);
   }
   const Progress progress = stderr_progress();
-  const quadopt::QuadGraph graph =
-      quadopt::build_quad_graph(std::move(loaded.mesh), options, progress);
-  const quadopt::QuadLayoutResult result =
-      quadopt::optimize_quad_layout(graph, alpha, solver, limits, progress);
+  const quadmesh::QuadGraph graph =
+      quadmesh::build_quad_graph(std::move(loaded.mesh), options, progress);
+  const quadmesh::QuadLayoutResult result =
+      quadmesh::optimize_quad_layout(graph, alpha, solver, limits, progress);
   if (parsed.has("-o")) write_mesh_file(parsed.value("-o"), result.mesh);
-  nlohmann::ordered_json json = quadopt::quad_layout_json(graph, result, options.diagonals);
+  nlohmann::ordered_json json = quadmesh::quad_layout_json(graph, result, options.diagonals);
   if (parsed.has("--remesh")) {
     if (!result.check.valid())
       throw InputError("the optimized layout is not valid (" + json["problems"][0].dump() +

@@ -117,12 +117,5 @@ TEST(QuadLayout, FieldOfIndexOneHalfIsSplitAndValid) {
     EXPECT_EQ(point.valence, 3);
 }
 
-TEST(QuadLayout, SurfaceWithoutSingularitiesHasNoLayout) {
-  // A cylinder's field is regular: no ports, no arcs; its one patch is an annulus.
-  const LayoutRun run = run_layout(open_cylinder(1, 2, 24, 12));
-  EXPECT_EQ(run.graph.graph.port_count(), 0u);
-  EXPECT_FALSE(run.layout.check.valid());
-}
-
 }  // namespace
 }  // namespace tessera

@@ -101,7 +101,7 @@ std::vector<double> smoothed_turns(const Loop& loop, const std::vector<double>& 
 
 // Corners: vertices that turn by more than kVertexDegrees themselves and by more than
 // kCornerDegrees smoothed (smoothed_turns()), the largest smoothed turn among such vertices within
-// a chord's reach (ties: the first).
+// a chord's reach (ties: both, as at the ends of a short side).
 std::vector<std::uint8_t> loop_corners(const Loop& loop, const std::vector<double>& turn) {
   const std::size_t n = loop.size();
   const std::vector<double> smoothed = smoothed_turns(loop, turn);
@@ -114,7 +114,7 @@ std::vector<std::uint8_t> loop_corners(const Loop& loop, const std::vector<doubl
     bool peak = true;
     for (std::size_t k = 1, j = i, m = loop.vertices_within(i, -1); k <= m && peak; ++k) {
       j = loop.step(j, -1);
-      peak = !candidate[j] || std::abs(smoothed[i]) > std::abs(smoothed[j]);
+      peak = !candidate[j] || std::abs(smoothed[i]) >= std::abs(smoothed[j]);
     }
     for (std::size_t k = 1, j = i, m = loop.vertices_within(i, +1); k <= m && peak; ++k) {
       j = loop.step(j, +1);

@@ -13,7 +13,7 @@
 //    1 - distance / reach: a staircase's alternate steps cancel, a corner keeps its turn, a curve
 //    turns by less within the reach (the field's boundary index rounds a turn to a quarter from
 //    45 degrees on: 55 keeps a margin);
-//  - that sum is the largest of such vertices within the reach.
+//  - no such vertex within the reach has a larger sum.
 // On a straight or evenly curved boundary the chord is the edge's own direction.
 //
 // In:  a mesh and its connectivity. Out: per edge, a unit tangent (zero on interior edges), and

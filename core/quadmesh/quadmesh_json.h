@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "quadopt/optimize_quads.h"
+#include "quadmesh/optimize_quads.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 
 nlohmann::ordered_json quad_layout_json(const QuadGraph& graph, const QuadLayoutResult& result,
                                         bool diagonals);
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

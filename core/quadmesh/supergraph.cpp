@@ -1,4 +1,4 @@
-#include "quadopt/supergraph.h"
+#include "quadmesh/supergraph.h"
 
 #include <algorithm>
 #include <map>
@@ -6,7 +6,7 @@
 
 #include "base/error.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 namespace {
 
 using layout::EdgeKind;
@@ -205,4 +205,4 @@ Supergraph build_supergraph(const Mesh& quads, const Connectivity& connectivity,
   return Builder(quads, connectivity, charts, base, options).run();
 }
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

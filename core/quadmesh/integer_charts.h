@@ -20,7 +20,7 @@
 #include "mesh/mesh.h"
 #include "param/seamless_param.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 
 struct IntegerCharts {
   Mesh triangles;
@@ -38,4 +38,4 @@ std::vector<Singularity> irregular_vertices(const Mesh& quads, const Connectivit
 
 IntegerCharts integer_charts(const Mesh& quads, const Connectivity& connectivity);
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

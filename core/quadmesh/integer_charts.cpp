@@ -1,9 +1,9 @@
-#include "quadopt/integer_charts.h"
+#include "quadmesh/integer_charts.h"
 
 #include "base/error.h"
 #include "param/poisson.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 namespace {
 
 // The unit square's corners, counterclockwise, as quad corners 0..3.
@@ -83,4 +83,4 @@ IntegerCharts integer_charts(const Mesh& quads, const Connectivity& connectivity
   return result;
 }
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

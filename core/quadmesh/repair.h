@@ -23,10 +23,10 @@
 
 #include "layout/quad_layout.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 
 std::vector<layout::EdgePair> quad_repair_pairs(const layout::Charts& charts,
                                                 const layout::PortGraph& graph,
                                                 const layout::QuadLayout& failed);
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

@@ -24,11 +24,11 @@
 #include "base/progress.h"
 #include "layout/quad_layout.h"
 #include "matching/solver.h"
-#include "quadopt/base_complex.h"
-#include "quadopt/integer_charts.h"
-#include "quadopt/supergraph.h"
+#include "quadmesh/base_complex.h"
+#include "quadmesh/integer_charts.h"
+#include "quadmesh/supergraph.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 
 struct QuadGraph {
   Mesh quads;
@@ -58,4 +58,4 @@ QuadLayoutResult optimize_quad_layout(const QuadGraph& graph, double alpha,
 Mesh layout_over_quads(const Mesh& quads, const layout::RefinedMesh& refined,
                        const std::vector<std::int32_t>& patch, std::size_t& cut_quads);
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

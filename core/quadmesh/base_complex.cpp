@@ -1,10 +1,10 @@
-#include "quadopt/base_complex.h"
+#include "quadmesh/base_complex.h"
 
 #include "base/disjoint_sets.h"
 #include "base/error.h"
-#include "quadopt/integer_charts.h"
+#include "quadmesh/integer_charts.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 namespace {
 
 bool is_irregular(const Connectivity& c, const std::vector<int>& valence, Index v) {
@@ -85,4 +85,4 @@ BaseComplex trivial_base_complex(const Mesh& quads, const Connectivity& c) {
   return b;
 }
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

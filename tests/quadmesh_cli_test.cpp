@@ -9,8 +9,8 @@
 #include "mesh/readers.h"
 #include "mesh/shapes.h"
 #include "mesh_test_util.h"
-#include "quadopt/base_complex.h"
-#include "quadopt_test_util.h"
+#include "quadmesh/base_complex.h"
+#include "quadmesh_test_util.h"
 
 namespace tessera {
 namespace {
@@ -22,7 +22,7 @@ std::string torus_file(const std::string& name) {
   return test::write_temp_file(name, write_obj(torus));
 }
 
-TEST(QuadoptCli, JsonHasTheKeysOfIssue40AndThePlyItsPatches) {
+TEST(QuadmeshCli, JsonHasTheKeysOfIssue40AndThePlyItsPatches) {
   const std::string in = torus_file("torus.obj");
   const std::string out = test::temp_path("layout.ply");
   const test::CliResult r = test::run_cli("optimize-quads " + test::quoted(in) +
@@ -45,7 +45,7 @@ TEST(QuadoptCli, JsonHasTheKeysOfIssue40AndThePlyItsPatches) {
 }
 
 // The optimized layout as a quad mesh of its own (Ch. 8): its trivial base complex is the layout.
-TEST(QuadoptCli, RemeshedQuadMeshHasTheOptimizedLayoutAsItsBaseComplex) {
+TEST(QuadmeshCli, RemeshedQuadMeshHasTheOptimizedLayoutAsItsBaseComplex) {
   const std::string in = torus_file("torus.obj");
   const std::string out = test::temp_path("remeshed.obj");
   const test::CliResult r = test::run_cli("optimize-quads " + test::quoted(in) +
@@ -55,13 +55,13 @@ TEST(QuadoptCli, RemeshedQuadMeshHasTheOptimizedLayoutAsItsBaseComplex) {
   EXPECT_EQ(json["patches"], 8);
   EXPECT_EQ(json["remeshed_irregular_vertices"], 8);
   const Mesh remeshed = read_obj(read_file_bytes(out, Limits()), out, Limits());
-  const quadopt::BaseComplex b =
-      quadopt::trivial_base_complex(remeshed, build_connectivity(remeshed));
+  const quadmesh::BaseComplex b =
+      quadmesh::trivial_base_complex(remeshed, build_connectivity(remeshed));
   EXPECT_EQ(b.patch_count, 8u);
   EXPECT_TRUE(b.check.valid());
 }
 
-TEST(QuadoptCli, NoDiagonalsIsReported) {
+TEST(QuadmeshCli, NoDiagonalsIsReported) {
   const std::string in = torus_file("torus.obj");
   const test::CliResult r =
       test::run_cli("optimize-quads " + test::quoted(in) + " --no-diagonals --json");
@@ -72,7 +72,7 @@ TEST(QuadoptCli, NoDiagonalsIsReported) {
   EXPECT_EQ(json["valid"], true);
 }
 
-TEST(QuadoptCli, TrianglesAreRefusedWithWhereAndSplitOnRequest) {
+TEST(QuadmeshCli, TrianglesAreRefusedWithWhereAndSplitOnRequest) {
   Mesh mesh = test::flat_quad_grid(3, 3);
   mesh.add_vertex({4, 0, 0});
   mesh.add_face({12, 16, 13});  // a triangle beside the grid's edge (3, 0)-(3, 1)
@@ -91,7 +91,7 @@ TEST(QuadoptCli, TrianglesAreRefusedWithWhereAndSplitOnRequest) {
 }
 
 // glTF holds triangles only: a quad mesh converted to GLB comes back as its quads.
-TEST(QuadoptCli, GlbOfAQuadMeshIsJoinedBackIntoQuads) {
+TEST(QuadmeshCli, GlbOfAQuadMeshIsJoinedBackIntoQuads) {
   const std::string in = torus_file("torus.obj");
   const std::string glb = test::temp_path("torus.glb");
   ASSERT_EQ(test::run_cli("convert " + test::quoted(in) + " " + test::quoted(glb)).exit_code, 0);
@@ -107,7 +107,7 @@ TEST(QuadoptCli, GlbOfAQuadMeshIsJoinedBackIntoQuads) {
   EXPECT_EQ(json["patches"], 8);
 }
 
-TEST(QuadoptCli, BadInputExitsWithTwo) {
+TEST(QuadmeshCli, BadInputExitsWithTwo) {
   EXPECT_EQ(test::run_cli("optimize-quads").exit_code, 2);
   EXPECT_EQ(test::run_cli("optimize-quads /nonexistent/quads.obj").exit_code, 2);
   const std::string in = torus_file("torus.obj");

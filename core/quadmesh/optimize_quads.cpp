@@ -1,4 +1,4 @@
-#include "quadopt/optimize_quads.h"
+#include "quadmesh/optimize_quads.h"
 
 #include <chrono>
 
@@ -6,9 +6,9 @@
 #include "layout/arcs.h"
 #include "layout/conflicts.h"
 #include "layout/twin_edges.h"
-#include "quadopt/repair.h"
+#include "quadmesh/repair.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -104,4 +104,4 @@ QuadLayoutResult optimize_quad_layout(const QuadGraph& graph, double alpha,
   return result;
 }
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

@@ -6,14 +6,14 @@
 
 #include "base/error.h"
 #include "mesh/shapes.h"
-#include "quadopt/optimize_quads.h"
-#include "quadopt_test_util.h"
+#include "quadmesh/optimize_quads.h"
+#include "quadmesh_test_util.h"
 
 namespace tessera {
 namespace {
 
-using quadopt::QuadGraph;
-using quadopt::QuadLayoutResult;
+using quadmesh::QuadGraph;
+using quadmesh::QuadLayoutResult;
 
 // A torus grid of n x m quads (vertex (i, j) is m i + j; 24 x 12 unless given) with the edge
 // from (i, j) to (i + 1, j) rotated at each given i, j: every rotation plants two valence-3 and
@@ -26,14 +26,14 @@ Mesh torus_with_rotated_edges(const std::vector<std::pair<int, int>>& at, int n 
 }
 
 QuadGraph graph_of(const Mesh& quads, bool diagonals = true) {
-  quadopt::SupergraphOptions options;
+  quadmesh::SupergraphOptions options;
   options.diagonals = diagonals;
-  return quadopt::build_quad_graph(quads, options, Progress());
+  return quadmesh::build_quad_graph(quads, options, Progress());
 }
 
 QuadLayoutResult optimize(const QuadGraph& graph, double alpha) {
-  return quadopt::optimize_quad_layout(graph, alpha, matching::SolverKind::exact, Limits(),
-                                       Progress());
+  return quadmesh::optimize_quad_layout(graph, alpha, matching::SolverKind::exact, Limits(),
+                                        Progress());
 }
 
 std::string first_problem(const QuadLayoutResult& r) {
@@ -48,7 +48,7 @@ int valence_sum(const QuadGraph& graph) {
 
 // Every patch of a quad layout has four corners; the corners at a singularity are its valence,
 // at a crossing of two arcs four: 4 F = sum of valences + 4 X, so F >= (sum of valences) / 4.
-TEST(QuadoptLayout, NearMissOnATorusIsClosedToTheCornerCountBound) {
+TEST(QuadmeshLayout, NearMissOnATorusIsClosedToTheCornerCountBound) {
   // Two clusters half the torus apart, the second one row off: their lines around the torus miss
   // each other by one edge (a near miss, Fig. 7.1), and B has twice the patches it needs.
   const QuadGraph graph = graph_of(torus_with_rotated_edges({{5, 4}, {17, 5}}));
@@ -64,12 +64,12 @@ TEST(QuadoptLayout, NearMissOnATorusIsClosedToTheCornerCountBound) {
   EXPECT_GT(r.cut_quads, 0u);                 // the near misses are closed by slanted arcs
   // GLPK's plain model of P1 (the reference) agrees.
   const QuadLayoutResult reference =
-      quadopt::optimize_quad_layout(graph, 0, matching::SolverKind::glpk, Limits(), Progress());
+      quadmesh::optimize_quad_layout(graph, 0, matching::SolverKind::glpk, Limits(), Progress());
   EXPECT_NEAR(reference.layout.matching.objective, r.layout.matching.objective, 1e-6);
   EXPECT_EQ(reference.check.patch_count, 8u);
 }
 
-TEST(QuadoptLayout, AlignedClustersAreJoinedAlongTheirOwnLines) {
+TEST(QuadmeshLayout, AlignedClustersAreJoinedAlongTheirOwnLines) {
   const QuadGraph graph = graph_of(torus_with_rotated_edges({{5, 4}, {17, 4}}));
   EXPECT_EQ(graph.base.patch_count, 12u);
   const QuadLayoutResult r = optimize(graph, 0);
@@ -77,7 +77,7 @@ TEST(QuadoptLayout, AlignedClustersAreJoinedAlongTheirOwnLines) {
   EXPECT_EQ(r.check.patch_count, 8u);
 }
 
-TEST(QuadoptLayout, SupergraphHasTheSizesOfSection74) {
+TEST(QuadmeshLayout, SupergraphHasTheSizesOfSection74) {
   const QuadGraph graph = graph_of(torus_with_rotated_edges({{5, 4}, {17, 5}}));
   const layout::PortGraph& g = graph.layout_graph.graph;
   // Sec. 7.4: sum of valences vertices; at most 4 |V_M| + |E_B| edges.
@@ -95,7 +95,7 @@ TEST(QuadoptLayout, SupergraphHasTheSizesOfSection74) {
   }
 }
 
-TEST(QuadoptLayout, WithoutDiagonalsNoEdgeHasEqualSides) {
+TEST(QuadmeshLayout, WithoutDiagonalsNoEdgeHasEqualSides) {
   const QuadGraph graph = graph_of(torus_with_rotated_edges({{5, 4}, {17, 5}}), false);
   const layout::PortGraph& g = graph.layout_graph.graph;
   EXPECT_EQ(graph.supergraph.diagonal_edges, 0u);
@@ -107,8 +107,8 @@ TEST(QuadoptLayout, WithoutDiagonalsNoEdgeHasEqualSides) {
 }
 
 // Alpha 0 on one cluster: the cheapest matching of P1 leaves annuli (Lemma 5.1 assumes disks);
-// the repair's pairs (quadopt/repair.h) rule it out and the next round is valid.
-TEST(QuadoptLayout, AnnuliOfAFailedRoundAreRepaired) {
+// the repair's pairs (quadmesh/repair.h) rule it out and the next round is valid.
+TEST(QuadmeshLayout, AnnuliOfAFailedRoundAreRepaired) {
   const QuadGraph graph = graph_of(torus_with_rotated_edges({{5, 4}}));
   EXPECT_EQ(graph.base.patch_count, 6u);
   const QuadLayoutResult r = optimize(graph, 0);
@@ -117,14 +117,14 @@ TEST(QuadoptLayout, AnnuliOfAFailedRoundAreRepaired) {
   EXPECT_LE(r.check.patch_count, graph.base.patch_count);
 }
 
-TEST(QuadoptLayout, FlatGridWithARotatedEdgeUsesVirtualPorts) {
+TEST(QuadmeshLayout, FlatGridWithARotatedEdgeUsesVirtualPorts) {
   Mesh grid = test::flat_quad_grid(8, 8);
   test::rotate_quad_edge(grid, 4 * 9 + 4, 5 * 9 + 4);
   const QuadGraph graph = graph_of(grid);
   const layout::PortGraph& g = graph.layout_graph.graph;
   std::size_t to_boundary = 0;
-  for (const quadopt::BaseLine& line : graph.base.lines)
-    to_boundary += line.end == quadopt::LineEnd::boundary;
+  for (const quadmesh::BaseLine& line : graph.base.lines)
+    to_boundary += line.end == quadmesh::LineEnd::boundary;
   EXPECT_EQ(g.virtual_ports.size(), to_boundary);
   EXPECT_GT(to_boundary, 0u);
   EXPECT_TRUE(graph.base.check.valid());
@@ -138,7 +138,7 @@ TEST(QuadoptLayout, FlatGridWithARotatedEdgeUsesVirtualPorts) {
 // An L of 8 x 8 quads without its 4 x 4 corner: the concave corner (three quads on the boundary)
 // sends two lines to the boundary, which P1 must keep (each port once; no other port to match):
 // three rectangles, before and after.
-TEST(QuadoptLayout, ConcaveBoundaryCornerKeepsItsTwoLines) {
+TEST(QuadmeshLayout, ConcaveBoundaryCornerKeepsItsTwoLines) {
   Mesh l_shape = test::flat_quad_grid(8, 8, [](int i, int j) { return i >= 4 && j >= 4; });
   remove_unreferenced_vertices(l_shape);
   const QuadGraph graph = graph_of(l_shape);
@@ -153,7 +153,7 @@ TEST(QuadoptLayout, ConcaveBoundaryCornerKeepsItsTwoLines) {
   EXPECT_EQ(r.cut_quads, 0u);
 }
 
-TEST(QuadoptLayout, FlatGridIsOnePatch) {
+TEST(QuadmeshLayout, FlatGridIsOnePatch) {
   const QuadGraph graph = graph_of(test::flat_quad_grid(4, 6));
   const QuadLayoutResult r = optimize(graph, 5);
   EXPECT_EQ(graph.layout_graph.graph.port_count(), 0u);
@@ -163,7 +163,7 @@ TEST(QuadoptLayout, FlatGridIsOnePatch) {
   EXPECT_EQ(r.cut_quads, 0u);
 }
 
-TEST(QuadoptLayout, LayoutOverQuadsKeepsTheQuadsNoArcCuts) {
+TEST(QuadmeshLayout, LayoutOverQuadsKeepsTheQuadsNoArcCuts) {
   const Mesh quads = torus_with_rotated_edges({{5, 4}, {17, 5}});
   const QuadGraph graph = graph_of(quads);
   const QuadLayoutResult r = optimize(graph, 0);
@@ -177,7 +177,7 @@ TEST(QuadoptLayout, LayoutOverQuadsKeepsTheQuadsNoArcCuts) {
 
 // 20,480 quads with eight clusters (32 irregular vertices): the figures of this run, as a
 // regression; the bound of the corner count is 32 patches.
-TEST(QuadoptLayout, TwentyThousandQuadsWithEightClusters) {
+TEST(QuadmeshLayout, TwentyThousandQuadsWithEightClusters) {
   const QuadGraph graph = graph_of(torus_with_rotated_edges(
       {{10, 5}, {37, 90}, {71, 33}, {95, 120}, {120, 64}, {140, 10}, {20, 70}, {150, 100}}, 160,
       128));
@@ -191,7 +191,7 @@ TEST(QuadoptLayout, TwentyThousandQuadsWithEightClusters) {
   EXPECT_EQ(r0.check.patch_count, 48u);
 }
 
-TEST(QuadoptLayout, GridTorusWithoutIrregularVertexIsRefused) {
+TEST(QuadmeshLayout, GridTorusWithoutIrregularVertexIsRefused) {
   EXPECT_THROW(graph_of(quad_torus(3, 1, 12, 6)), InputError);
 }
 

@@ -8,42 +8,42 @@
 #include "mesh/connectivity.h"
 #include "mesh/shapes.h"
 #include "param/poisson.h"
-#include "quadopt/base_complex.h"
-#include "quadopt/integer_charts.h"
-#include "quadopt/quad_input.h"
-#include "quadopt_test_util.h"
+#include "quadmesh/base_complex.h"
+#include "quadmesh/integer_charts.h"
+#include "quadmesh/quad_input.h"
+#include "quadmesh_test_util.h"
 
 namespace tessera {
 namespace {
 
-using quadopt::BaseComplex;
-using quadopt::trivial_base_complex;
+using quadmesh::BaseComplex;
+using quadmesh::trivial_base_complex;
 
 BaseComplex base_of(const Mesh& quads) {
   return trivial_base_complex(quads, build_connectivity(quads));
 }
 
-TEST(QuadoptBaseComplex, FlatGridIsOnePatchBoundedByItsCorners) {
+TEST(QuadmeshBaseComplex, FlatGridIsOnePatchBoundedByItsCorners) {
   const Mesh grid = test::flat_quad_grid(5, 3);
   const BaseComplex b = base_of(grid);
   // The four corners are irregular (one quad, Sec. 7.2) but have no interior edge: no line.
-  EXPECT_EQ(quadopt::irregular_vertices(grid, build_connectivity(grid)).size(), 4u);
+  EXPECT_EQ(quadmesh::irregular_vertices(grid, build_connectivity(grid)).size(), 4u);
   EXPECT_TRUE(b.lines.empty());
   EXPECT_EQ(b.patch_count, 1u);
   EXPECT_TRUE(b.check.valid());
 }
 
-TEST(QuadoptBaseComplex, RotatedEdgeInAGridTracesItsLinesToTheBoundary) {
+TEST(QuadmeshBaseComplex, RotatedEdgeInAGridTracesItsLinesToTheBoundary) {
   Mesh grid = test::flat_quad_grid(8, 8);
   // Vertices (4, 4) and (5, 4): the edge between them is shared by quads (4, 3) and (4, 4).
   test::rotate_quad_edge(grid, 4 * 9 + 4, 5 * 9 + 4);
   const Connectivity c = build_connectivity(grid);
-  const std::vector<Singularity> irregular = quadopt::irregular_vertices(grid, c);
+  const std::vector<Singularity> irregular = quadmesh::irregular_vertices(grid, c);
   ASSERT_EQ(irregular.size(), 8u);  // two of valence 3, two of valence 5, four corners
   const BaseComplex b = trivial_base_complex(grid, c);
   std::size_t to_boundary = 0;
-  for (const quadopt::BaseLine& line : b.lines)
-    to_boundary += line.end == quadopt::LineEnd::boundary;
+  for (const quadmesh::BaseLine& line : b.lines)
+    to_boundary += line.end == quadmesh::LineEnd::boundary;
   EXPECT_EQ(b.lines.size(), 3u + 3u + 5u + 5u);
   EXPECT_TRUE(b.check.valid()) << (b.check.problems.empty() ? "" : b.check.problems[0]);
   // Three separatrices join the planted vertices (traced from both ends), ten reach the boundary.
@@ -51,7 +51,7 @@ TEST(QuadoptBaseComplex, RotatedEdgeInAGridTracesItsLinesToTheBoundary) {
   EXPECT_EQ(b.patch_count, 12u);
 }
 
-TEST(QuadoptBaseComplex, TorusWithRotatedEdge) {
+TEST(QuadmeshBaseComplex, TorusWithRotatedEdge) {
   Mesh torus = quad_torus(3, 1, 24, 12);
   test::rotate_quad_edge(torus, 5 * 12 + 4, 6 * 12 + 4);
   const BaseComplex b = base_of(torus);
@@ -62,14 +62,14 @@ TEST(QuadoptBaseComplex, TorusWithRotatedEdge) {
 
 // The indices (4 - valence) / 4 inside and (2 - valence) / 4 on the boundary sum to the Euler
 // characteristic (Poincare-Hopf in the integer metric, Sec. 7.2).
-TEST(QuadoptBaseComplex, IrregularVerticesSumToTheEulerCharacteristic) {
+TEST(QuadmeshBaseComplex, IrregularVerticesSumToTheEulerCharacteristic) {
   Mesh grid = test::flat_quad_grid(8, 8);
   test::rotate_quad_edge(grid, 4 * 9 + 4, 5 * 9 + 4);
   Mesh torus = quad_torus(3, 1, 24, 12);
   test::rotate_quad_edge(torus, 5 * 12 + 4, 6 * 12 + 4);
   for (const auto& [mesh, chi] : {std::pair{grid, 1.0}, std::pair{torus, 0.0}}) {
     double sum = 0;
-    for (const Singularity& s : quadopt::irregular_vertices(mesh, build_connectivity(mesh)))
+    for (const Singularity& s : quadmesh::irregular_vertices(mesh, build_connectivity(mesh)))
       sum += s.index;
     EXPECT_DOUBLE_EQ(sum, chi);
   }
@@ -77,10 +77,10 @@ TEST(QuadoptBaseComplex, IrregularVerticesSumToTheEulerCharacteristic) {
 
 // Every transition of the integer charts maps the shared edge onto itself with an integer
 // translation (Sec. 7.1: the charts are unit squares, the metric counts edges).
-TEST(QuadoptBaseComplex, IntegerChartsAgreeAcrossEveryEdge) {
+TEST(QuadmeshBaseComplex, IntegerChartsAgreeAcrossEveryEdge) {
   Mesh torus = quad_torus(3, 1, 24, 12);
   test::rotate_quad_edge(torus, 5 * 12 + 4, 6 * 12 + 4);
-  const quadopt::IntegerCharts charts = quadopt::integer_charts(torus, build_connectivity(torus));
+  const quadmesh::IntegerCharts charts = quadmesh::integer_charts(torus, build_connectivity(torus));
   const Connectivity& c = charts.connectivity;
   const SeamlessParam& p = charts.param;
   for (Index h = 0; h < c.corner_count; ++h) {
@@ -98,12 +98,12 @@ TEST(QuadoptBaseComplex, IntegerChartsAgreeAcrossEveryEdge) {
   EXPECT_EQ(p.singularities.size(), 4u);
 }
 
-TEST(QuadoptInput, TrianglesAreCountedAndNamed) {
+TEST(QuadmeshInput, TrianglesAreCountedAndNamed) {
   Mesh mesh = test::flat_quad_grid(2, 2);
   mesh.add_vertex({3, 0, 0});
   mesh.add_face({6, 9, 7});
   try {
-    quadopt::require_quad_mesh(mesh, "m.obj");
+    quadmesh::require_quad_mesh(mesh, "m.obj");
     FAIL() << "no error";
   } catch (const TopologyError& e) {
     const std::string message = e.what();
@@ -112,8 +112,8 @@ TEST(QuadoptInput, TrianglesAreCountedAndNamed) {
     EXPECT_NE(message.find("face 4 (3 corners"), std::string::npos) << message;
     EXPECT_NE(message.find("--split"), std::string::npos) << message;
   }
-  const Mesh split = quadopt::split_into_quads(mesh);
-  EXPECT_NO_THROW(quadopt::require_quad_mesh(split, "split"));
+  const Mesh split = quadmesh::split_into_quads(mesh);
+  EXPECT_NO_THROW(quadmesh::require_quad_mesh(split, "split"));
   EXPECT_EQ(split.face_count(), 4u * 4u + 3u);
 }
 

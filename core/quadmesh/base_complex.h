@@ -18,7 +18,7 @@
 #include "mesh/connectivity.h"
 #include "mesh/mesh.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 
 enum class LineEnd : std::uint8_t { singularity, boundary };
 
@@ -43,4 +43,4 @@ Index straight_on(const Connectivity& connectivity, const std::vector<int>& vale
 
 BaseComplex trivial_base_complex(const Mesh& quads, const Connectivity& connectivity);
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

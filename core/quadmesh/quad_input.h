@@ -13,7 +13,7 @@
 
 #include "mesh/mesh.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 
 void require_quad_mesh(const Mesh& mesh, const std::string& source);
 
@@ -26,4 +26,4 @@ Mesh split_into_quads(const Mesh& mesh);
 // halves of one quad (an odd triangle count, no shared edge, or a polygon among the faces).
 Mesh join_triangle_pairs(const Mesh& mesh, const std::string& source);
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

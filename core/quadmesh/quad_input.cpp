@@ -1,11 +1,11 @@
-#include "quadopt/quad_input.h"
+#include "quadmesh/quad_input.h"
 
 #include <map>
 #include <utility>
 
 #include "base/error.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 namespace {
 
 constexpr std::size_t kFacesNamed = 5;
@@ -106,4 +106,4 @@ Mesh join_triangle_pairs(const Mesh& mesh, const std::string& source) {
   return result;
 }
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

@@ -20,10 +20,10 @@
 #pragma once
 
 #include "layout/port_graph.h"
-#include "quadopt/base_complex.h"
-#include "quadopt/integer_charts.h"
+#include "quadmesh/base_complex.h"
+#include "quadmesh/integer_charts.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 
 struct SupergraphOptions {
   bool diagonals = true;  // false: no case-3 edges (Sec. 7.5, Fig. 7.6, 7.7)
@@ -41,4 +41,4 @@ Supergraph build_supergraph(const Mesh& quads, const Connectivity& connectivity,
                             const IntegerCharts& charts, const BaseComplex& base,
                             const SupergraphOptions& options);
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

@@ -1,8 +1,8 @@
-#include "quadopt/quadopt_json.h"
+#include "quadmesh/quadmesh_json.h"
 
 #include <cmath>
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 namespace {
 
 nlohmann::ordered_json finite_or_null(double x) {
@@ -63,4 +63,4 @@ nlohmann::ordered_json quad_layout_json(const QuadGraph& graph, const QuadLayout
   return json;
 }
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh

@@ -1,4 +1,4 @@
-#include "quadopt/repair.h"
+#include "quadmesh/repair.h"
 
 #include <algorithm>
 #include <optional>
@@ -6,7 +6,7 @@
 #include "layout/arcs.h"
 #include "layout/conflicts.h"
 
-namespace tessera::quadopt {
+namespace tessera::quadmesh {
 namespace {
 
 bool share_a_node(const layout::GraphEdge& a, const layout::GraphEdge& b) {
@@ -124,4 +124,4 @@ std::vector<layout::EdgePair> quad_repair_pairs(const layout::Charts& charts,
   return pairs;
 }
 
-}  // namespace tessera::quadopt
+}  // namespace tessera::quadmesh
