@@ -10,24 +10,14 @@ import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import validator from 'gltf-validator';
-import { loadTessera } from './tessera_module.mjs';
+import { loadTessera, writeSampleObj } from './tessera_module.mjs';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const cli = path.join(root, 'build/native/cli/tessera');
 const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'tessera-remesh-'));
 const tessera = await loadTessera();
 
-// A sample of the module (a mesh the core builds in code) written as OBJ, so that the CLI reads
-// the very same mesh.
-function sampleFile(name) {
-  const mesh = tessera.sampleMesh(name);
-  const lines = [];
-  for (let i = 0; i < mesh.positions.length; i += 3) lines.push(`v ${mesh.positions[i]} ${mesh.positions[i + 1]} ${mesh.positions[i + 2]}`);
-  for (let i = 0; i < mesh.triangles.length; i += 3) lines.push(`f ${mesh.triangles[i] + 1} ${mesh.triangles[i + 1] + 1} ${mesh.triangles[i + 2] + 1}`);
-  const file = path.join(dir, `${name}.obj`);
-  fs.writeFileSync(file, lines.join('\n'));
-  return file;
-}
+const sampleFile = (name) => writeSampleObj(tessera, name, dir);
 
 // The layout of a file in the module at alpha, with the CLI's defaults (smooth field, sharp 35).
 function wasmLayout(file, alpha) {

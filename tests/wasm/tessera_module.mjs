@@ -16,3 +16,15 @@ export async function loadTessera() {
   const wasmBinary = fs.readFileSync(path.join(wasmDir, 'tessera.wasm'));
   return createTessera({ wasmBinary });
 }
+
+// A sample of the module (a mesh the core builds in code) written as <dir>/<name>.obj, so that the
+// native CLI reads the very same mesh.
+export function writeSampleObj(tessera, name, dir) {
+  const mesh = tessera.sampleMesh(name);
+  const lines = [];
+  for (let i = 0; i < mesh.positions.length; i += 3) lines.push(`v ${mesh.positions[i]} ${mesh.positions[i + 1]} ${mesh.positions[i + 2]}`);
+  for (let i = 0; i < mesh.triangles.length; i += 3) lines.push(`f ${mesh.triangles[i] + 1} ${mesh.triangles[i + 1] + 1} ${mesh.triangles[i + 2] + 1}`);
+  const file = path.join(dir, `${name}.obj`);
+  fs.writeFileSync(file, lines.join('\n'));
+  return file;
+}
