@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "mesh/boundary_tangents.h"
+#include "mesh/geometry.h"
 
 namespace tessera {
 namespace {
@@ -13,13 +14,6 @@ constexpr double kQuarter = std::numbers::pi / 2;
 // The angle reduced modulo a quarter turn to [-pi/4, pi/4].
 double reduce_quarter(double a) {
   return std::remainder(a, kQuarter);
-}
-
-// Interior angle of the triangle at the start of corner halfedge h.
-double corner_angle(const Mesh& mesh, const Connectivity& c, Index h) {
-  const Eigen::Vector3d a = halfedge_vector(mesh, c, h);
-  const Eigen::Vector3d b = -halfedge_vector(mesh, c, c.prev[h]);
-  return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
 // The turn that aligns the field of the face of corner halfedge h with h's direction, read

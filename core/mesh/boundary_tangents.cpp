@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "mesh/geometry.h"
 #include "mesh/topology.h"
 
 namespace tessera {
@@ -70,12 +71,8 @@ struct Loop {
 // angle (the sum of its corner angles), positive where the surface is convex.
 double vertex_turn(const Mesh& mesh, const Connectivity& c, Index v) {
   double angle = 0;
-  for (Index h : outgoing_halfedges(c, v)) {
-    if (c.is_boundary_halfedge(h)) continue;
-    const Eigen::Vector3d a = mesh.positions[c.to_vertex[h]] - mesh.positions[v];
-    const Eigen::Vector3d b = mesh.positions[c.from_vertex(c.prev[h])] - mesh.positions[v];
-    angle += std::atan2(a.cross(b).norm(), a.dot(b));
-  }
+  for (Index h : outgoing_halfedges(c, v))
+    if (!c.is_boundary_halfedge(h)) angle += corner_angle(mesh, c, h);
   return std::numbers::pi - angle;
 }
 

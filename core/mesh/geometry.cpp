@@ -51,6 +51,13 @@ std::vector<Eigen::Vector3d> vertex_normals(const Mesh& mesh) {
   return normals;
 }
 
+double corner_angle(const Mesh& mesh, const Connectivity& c, Index h) {
+  const Eigen::Vector3d& at = mesh.positions[c.from_vertex(h)];
+  const Eigen::Vector3d a = mesh.positions[c.to_vertex[h]] - at;
+  const Eigen::Vector3d b = mesh.positions[c.from_vertex(c.prev[h])] - at;
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
 std::vector<double> dihedral_angles(const Mesh& mesh, const Connectivity& c) {
   const std::vector<Eigen::Vector3d> normals = face_normals(mesh);
   std::vector<double> angles(c.edge_count(), 0.0);

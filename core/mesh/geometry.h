@@ -25,6 +25,9 @@ std::vector<Eigen::Vector3d> face_normals(const Mesh& mesh);
 // Area-weighted average of the incident face normals, normalized; zero where that sum vanishes.
 std::vector<Eigen::Vector3d> vertex_normals(const Mesh& mesh);
 
+// The interior angle of the triangle at the start of corner halfedge h, in [0, pi].
+double corner_angle(const Mesh& mesh, const Connectivity& connectivity, Index h);
+
 // Per edge, the signed angle between the normals of its two faces, in [-pi, pi]: 0 where flat,
 // positive where the surface bends away from its normals (convex), 0 on boundary edges.
 std::vector<double> dihedral_angles(const Mesh& mesh, const Connectivity& connectivity);
